@@ -91,7 +91,7 @@ function [rgb, valid] = merl_eval (brdf, wi, wo, method = "nearest")
       endfor
     endfor
     ok = wsum > 0;
-    v(ok,:) = v(ok,:) ./ wsum(ok);
+    v = v ./ max (wsum, realmin);
     v(! ok,:) = 0;
   endif
   rgb(above,:) = v;
