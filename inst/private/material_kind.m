@@ -1,0 +1,17 @@
+## Copyright (C) 2026 The lafortune developers
+## SPDX-License-Identifier: GPL-3.0-or-later
+
+## -*- texinfo -*-
+## @deftypefn {} {@var{kind} =} material_kind (@var{material})
+## "lafortune", "merl" or "" for anything else (private).
+## @end deftypefn
+function kind = material_kind (material)
+  kind = "";
+  if (isstruct (material) && isscalar (material))
+    if (isfield (material, "Cxy"))
+      kind = "lafortune";
+    elseif (isfield (material, "data") && isfield (material, "valid"))
+      kind = "merl";
+    endif
+  endif
+endfunction
