@@ -124,7 +124,7 @@ endfunction
 %! ## below the horizon: zero
 %! m = struct ("rho_d", [1 1 1], "Cxy", zeros (0, 3), "Cz", zeros (0, 3), "e", zeros (0, 3));
 %! R = scene_slice (__scene ([0 0 1], [0 0 1]), m, [0 pi/2 2], [0 1.6]);
-%! assert (R(:,:,1), [1/pi 0; 0 0; 0 0], 1e-15);
+%! assert (R(:,:,1), [2/pi 0; 0 0; 0 0], 1e-15);   # E = 2
 
 %!error <Invalid call> scene_slice (1, 2, 3)
 %!error id=lafortune:badScene scene_slice (1, 2, 3, 4)
