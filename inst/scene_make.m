@@ -1,0 +1,317 @@
+## Copyright (C) 2026 The lafortune developers
+## SPDX-License-Identifier: GPL-3.0-or-later
+
+## -*- texinfo -*-
+## @deftypefn  {lafortune} {@var{scene} =} scene_make (@var{name})
+## @deftypefnx {lafortune} {@var{scene} =} scene_make (@var{name}, @var{option}, @var{value}, @dots{})
+## @deftypefnx {lafortune} {@var{names} =} scene_make ()
+## Build one of the built-in scenes as a plain scene struct.
+##
+## Scenes (@var{name}):
+##
+## @table @asis
+## @item "sphere"
+## one unit sphere at the origin, seen from +z (the lit-sphere view).
+## @item "spheres"
+## four spheres of different sizes standing on the ground plane y = 0, seen
+## from above the front; the light comes from the upper left, so every sphere
+## casts a visible shadow on the plane.
+## @item "torus"
+## the built-in triangle mesh (@code{mesh_torus}, vertex normals), tilted
+## 60 degrees toward the camera; option @code{"resolution"} ([nu nv], default
+## [96 48], i.e. 9216 triangles; [224 224] gives 100352).
+## @item "mesh"
+## a triangle mesh read with @code{mesh_read} from option @code{"file"} (PLY or
+## OBJ, e.g. the Stanford Happy Buddha @file{happy_vrip.ply} you download),
+## centred at the origin and scaled to a largest extent of 2; without a file,
+## the built-in torus.
+## @end table
+##
+## Options (name/value pairs):
+##
+## @table @code
+## @item "size"
+## [@var{H} @var{W}] in pixels (a scalar means square), default [256 256], or
+## @code{"paper"}: the paper's 256 x 512 image, taken as @var{W} = 256 wide and
+## @var{H} = 512 high (portrait, the Happy Buddha's shape), i.e. [512 256].
+## @item "spp"
+## samples (primary rays) per pixel, default 16 (the paper: 128).
+## @item "seed"
+## integer seed of the pixel jitter, default 1.
+## @item "camera"
+## @code{"orthographic"} (default) or @code{"perspective"} (same eye and
+## target, the field of view that shows the orthographic extent at the target).
+## @item "light"
+## @code{"directional"} (default) or @code{"point"} (placed at distance 10
+## from the target along @code{"light_direction"}).
+## @item "light_direction"
+## direction toward the light (normalised), default [-1 1 1] (sphere, torus,
+## mesh) or [-1 1.6 0.9] (spheres).
+## @item "irradiance"
+## irradiance E on a surface facing the light, scalar or 1 x 3, default 1.
+## For a point light it holds at the target; the struct stores the intensity
+## E d^2.
+## @item "background"
+## 1 x 3 background radiance, default [0 0 0].
+## @item "file"
+## mesh file for the scene @code{"mesh"}.
+## @item "resolution"
+## [nu nv] of the built-in torus, default [96 48].
+## @end table
+##
+## The struct (fields @code{name}, @code{width}, @code{height}, @code{spp},
+## @code{seed}, @code{background}, @code{camera}, @code{light},
+## @code{objects}) is the one documented in HACKING.md; the orthographic
+## @code{extent} frames the objects with a margin for any aspect ratio.
+## With no argument, the names of the scenes are returned.  An unknown scene
+## gives the error @code{lafortune:unknownScene}, a bad option
+## @code{lafortune:badOption}.
+##
+## @example
+## @group
+## scene = scene_make ("spheres", "size", [64 96], "spp", 4);
+## model = struct ("rho_d", [0.2 0.1 0.05], "Cxy", [-1 -1 -1], ...
+##                 "Cz", [1 1 1], "e", [40 40 40]);
+## img = rt_render (scene, model);
+## imshow (img / max (img(:)));
+## scene = scene_make ("mesh", "file", "happy_vrip.ply", "size", "paper", "spp", 128);
+## @end group
+## @end example
+## @seealso{rt_render, mesh_read, mesh_torus, scene_slice}
+## @end deftypefn
+
+function scene = scene_make (name, varargin)
+  names = {"sphere", "spheres", "torus", "mesh"};
+  if (nargin == 0)
+    scene = names;
+    return;
+  endif
+  if (! ischar (name) || ! any (strcmp (name, names)))
+    if (ischar (name))
+      what = sprintf ("'%s'", name);
+    else
+      what = sprintf ("a %s", class (name));
+    endif
+    error ("lafortune:unknownScene",
+           "scene_make: unknown scene %s; valid scenes: %s", what, strjoin (names, ", "));
+  endif
+  opt = parse_opts (varargin, "scene_make",
+                    struct ("size", [256 256], "spp", 16, "seed", 1,
+                            "camera", "orthographic", "light", "directional",
+                            "light_direction", [], "irradiance", 1,
+                            "background", [0 0 0], "file", "", "resolution", [96 48]));
+  [H, W] = check_size (opt.size);
+  spp = opt.spp;
+  if (! (isnumeric (spp) && isscalar (spp) && isreal (spp) && spp >= 1 && spp == fix (spp)))
+    error ("lafortune:badOption", "scene_make: SPP must be a positive integer");
+  endif
+  seed = opt.seed;
+  if (! (isnumeric (seed) && isscalar (seed) && isreal (seed) && isfinite (seed)
+         && seed == fix (seed)))
+    error ("lafortune:badOption", "scene_make: SEED must be an integer");
+  endif
+  if (! ischar (opt.camera) || ! any (strcmp (opt.camera, {"orthographic", "perspective"})))
+    error ("lafortune:badOption",
+           "scene_make: CAMERA must be \"orthographic\" or \"perspective\"");
+  endif
+  if (! ischar (opt.light) || ! any (strcmp (opt.light, {"directional", "point"})))
+    error ("lafortune:badOption", "scene_make: LIGHT must be \"directional\" or \"point\"");
+  endif
+  E = opt.irradiance;
+  if (! (isnumeric (E) && isreal (E) && any (numel (E) == [1 3]) && all (isfinite (E))
+         && all (E >= 0)))
+    error ("lafortune:badOption",
+           "scene_make: IRRADIANCE must be a scalar or 1 x 3 of finite values >= 0");
+  endif
+  bg = opt.background;
+  if (! (isnumeric (bg) && isreal (bg) && numel (bg) == 3 && all (isfinite (bg))))
+    error ("lafortune:badOption", "scene_make: BACKGROUND must be a finite 1 x 3 radiance");
+  endif
+  if (! isempty (opt.file) && ! strcmp (name, "mesh"))
+    error ("lafortune:badOption", "scene_make: option FILE is for the scene \"mesh\" only");
+  endif
+
+  aspect = H / W;
+  switch (name)
+    case "sphere"
+      objects = make_obj ("sphere", "center", [0 0 0], "radius", 1);
+      eye = [0 0 5];
+      target = [0 0 0];
+      extent = 2.3 * max (1, aspect);
+      ldir = [-1 1 1];
+    case "spheres"
+      objects = [make_obj("plane", "point", [0 0 0], "normal", [0 1 0]), ...
+                 make_obj("sphere", "center", [-1.6 0.7 -0.2], "radius", 0.7), ...
+                 make_obj("sphere", "center", [0.3 1 -1], "radius", 1), ...
+                 make_obj("sphere", "center", [1.7 0.5 0.5], "radius", 0.5), ...
+                 make_obj("sphere", "center", [-0.1 0.35 1.2], "radius", 0.35)];
+      eye = [0 3.5 8];
+      target = [0 0.5 0];
+      extent = max (3.6, 5.4 * aspect);
+      ldir = [-1 1.6 0.9];
+    case {"torus", "mesh"}
+      if (strcmp (name, "mesh") && ! isempty (opt.file))
+        if (! ischar (opt.file))
+          error ("lafortune:badOption", "scene_make: FILE must be a file name");
+        endif
+        [V, F, N] = mesh_read (opt.file);
+        lo = min (V, [], 1);
+        hi = max (V, [], 1);
+        V = (V - (lo + hi) / 2) * (2 / max (hi - lo));
+      else
+        [V, F, N] = mesh_torus (opt.resolution);
+        a = 60 * pi / 180;                   # tilt the axis toward the camera
+        Rx = [1 0 0; 0 cos(a) -sin(a); 0 sin(a) cos(a)];
+        V = V * Rx.';
+        N = N * Rx.';
+      endif
+      objects = make_obj ("mesh", "vertices", V, "faces", F, "normals", N);
+      lo = min (V, [], 1);
+      hi = max (V, [], 1);
+      eye = [0 0 5];
+      target = [0 0 0];
+      extent = 1.1 * max (2 * max (abs ([lo(2) hi(2)])), 2 * max (abs ([lo(1) hi(1)])) * aspect);
+      ldir = [-1 1 1];
+  endswitch
+
+  if (! isempty (opt.light_direction))
+    ldir = opt.light_direction;
+    if (! (isnumeric (ldir) && isreal (ldir) && numel (ldir) == 3 && all (isfinite (ldir))
+           && norm (ldir) > 0))
+      error ("lafortune:badOption",
+             "scene_make: LIGHT_DIRECTION must be a finite non-zero 3-vector");
+    endif
+  endif
+  ldir = double (ldir(:).') / norm (ldir);
+  dist = norm (eye - target);
+  camera = struct ("type", opt.camera, "eye", eye, "target", target, "up", [0 1 0],
+                   "extent", extent, "fov", 2 * atand (extent / 2 / dist));
+  E = double (E(:).');
+  if (strcmp (opt.light, "directional"))
+    light = struct ("type", "directional", "direction", ldir, "position", [],
+                    "irradiance", E);
+  else
+    d = 10;
+    light = struct ("type", "point", "direction", [], "position", target + d * ldir,
+                    "irradiance", E * d ^ 2);
+  endif
+  scene = struct ("name", name, "width", W, "height", H, "spp", double (spp),
+                  "seed", double (seed), "background", double (bg(:).'),
+                  "camera", camera, "light", light);
+  scene.objects = objects;
+endfunction
+
+function [H, W] = check_size (sz)
+  if (ischar (sz))
+    if (! strcmpi (sz, "paper"))
+      error ("lafortune:badOption",
+             "scene_make: SIZE must be [H W] or \"paper\", got \"%s\"", sz);
+    endif
+    H = 512;
+    W = 256;
+    return;
+  endif
+  if (! (isnumeric (sz) && isreal (sz) && any (numel (sz) == [1 2]) && all (sz >= 1)
+         && all (sz == fix (sz)) && all (isfinite (sz))))
+    error ("lafortune:badOption",
+           "scene_make: SIZE must be [H W] (positive integers) or \"paper\"");
+  endif
+  if (isscalar (sz))
+    sz = [sz sz];
+  endif
+  H = double (sz(1));
+  W = double (sz(2));
+endfunction
+
+function o = make_obj (type, varargin)
+  o = struct ("type", type, "center", [], "radius", [], "point", [], "normal", [],
+              "vertices", [], "faces", [], "normals", []);
+  for k = 1:2:numel (varargin)
+    o.(varargin{k}) = varargin{k+1};
+  endfor
+endfunction
+
+%!test
+%! s = scene_make ("sphere");
+%! assert (s.name, "sphere");
+%! assert ([s.height s.width s.spp s.seed], [256 256 16 1]);
+%! assert (s.background, [0 0 0]);
+%! assert (s.camera.type, "orthographic");
+%! assert (s.light.type, "directional");
+%! assert (norm (s.light.direction), 1, 1e-15);
+%! assert (numel (s.objects), 1);
+%! assert (s.objects.type, "sphere");
+%! assert (s.objects.radius, 1);
+%! ## the whole sphere is in view
+%! assert (s.camera.extent > 2);
+
+%!test
+%! s = scene_make ("spheres", "size", "paper", "spp", 128, "seed", 7);
+%! assert ([s.height s.width s.spp s.seed], [512 256 128 7]);
+%! assert ({s.objects.type}, {"plane", "sphere", "sphere", "sphere", "sphere"});
+%! ## spheres rest on the plane y = 0
+%! c = vertcat (s.objects(2:end).center);
+%! assert (c(:,2), [s.objects(2:end).radius]', 1e-15);
+%! ## the whole row of spheres fits the (narrow) width
+%! assert (s.camera.extent * s.width / s.height >= 2 * 2.2);
+
+%!test
+%! s = scene_make ("torus", "resolution", [16 8], "size", [20 30]);
+%! assert (s.objects.type, "mesh");
+%! assert (size (s.objects.faces), [256 3]);
+%! assert (size (s.objects.normals), [128 3]);
+%! m = scene_make ("mesh", "resolution", [16 8]);
+%! assert (m.objects.vertices, s.objects.vertices);
+%! ## the mesh fits the view
+%! V = s.objects.vertices;
+%! assert (max (abs (V(:,2))) < s.camera.extent / 2);
+%! assert (max (abs (V(:,1))) < s.camera.extent / 2 * 30 / 20);
+
+%!test
+%! ## a mesh from a file is centred and scaled to a largest extent of 2
+%! f = [tempname() ".obj"];
+%! fid = fopen (f, "w");
+%! fprintf (fid, "v 10 10 10\nv 14 10 10\nv 10 11 10\nv 10 10 12\nf 1 2 3\nf 1 2 4\n");
+%! fclose (fid);
+%! s = scene_make ("mesh", "file", f);
+%! delete (f);
+%! V = s.objects.vertices;
+%! assert (max (V) - min (V), [2 0.5 1], 1e-12);
+%! assert ((max (V) + min (V)) / 2, [0 0 0], 1e-12);
+%! assert (isempty (s.objects.normals));
+
+%!test
+%! s = scene_make ("sphere", "camera", "perspective", "light", "point", ...
+%!                 "light_direction", [0 0 2], "irradiance", [1 2 3]);
+%! assert (s.camera.type, "perspective");
+%! assert (s.camera.fov > 0 && s.camera.fov < 90);
+%! assert (s.light.position, [0 0 10]);
+%! assert (s.light.irradiance, [100 200 300]);
+%! s = scene_make ("sphere", "size", 32, "light_direction", [0 3 4]);
+%! assert ([s.height s.width], [32 32]);
+%! assert (s.light.direction, [0 0.6 0.8], 1e-15);
+%! assert (scene_make (), {"sphere", "spheres", "torus", "mesh"});
+
+%!error id=lafortune:unknownScene scene_make ("teapot")
+%!error <valid scenes: sphere, spheres, torus, mesh> scene_make ("teapot")
+%!error id=lafortune:unknownScene scene_make (3)
+%!error id=lafortune:badOption scene_make ("sphere", "size", [0 3])
+%!error id=lafortune:badOption scene_make ("sphere", "size", "huge")
+%!error id=lafortune:badOption scene_make ("sphere", "spp", 1.5)
+%!error id=lafortune:badOption scene_make ("sphere", "camera", "fisheye")
+%!error id=lafortune:badOption scene_make ("sphere", "light", "area")
+%!error id=lafortune:badOption scene_make ("sphere", "light_direction", [0 0 0])
+%!error id=lafortune:badOption scene_make ("sphere", "irradiance", -1)
+%!error id=lafortune:badOption scene_make ("sphere", "file", "x.ply")
+%!error id=lafortune:badOption scene_make ("sphere", "colour", 1)
+%!error id=lafortune:meshReadNotFound scene_make ("mesh", "file", "/nonexistent/x.ply")
+
+%!demo
+%! ## the four built-in scenes, small and quick
+%! m = struct ("rho_d", [0.25 0.1 0.05], "Cxy", [-1 -1 -1], "Cz", [0.95 0.95 0.95], ...
+%!             "e", [30 30 30]);
+%! n = scene_make ();
+%! for k = 1:3
+%!   img = rt_render (scene_make (n{k}, "size", [96 96], "spp", 2), m, "progress", false);
+%!   subplot (1, 3, k); imshow (min (img / prctile (img(:), 99.5), 1)); title (n{k});
+%! endfor
