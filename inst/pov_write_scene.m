@@ -1,0 +1,584 @@
+## Copyright (C) 2026 The lafortune developers
+## SPDX-License-Identifier: GPL-3.0-or-later
+
+## -*- texinfo -*-
+## @deftypefn  {lafortune} {@var{info} =} pov_write_scene (@var{scene}, @var{material}, @var{file})
+## @deftypefnx {lafortune} {@var{info} =} pov_write_scene (@dots{}, @var{name}, @var{value}, @dots{})
+## Write a POV-Ray 3.7 scene that renders @var{scene} with @var{material}.
+##
+## The scene file has the camera, light, geometry and image size of the scene
+## struct @var{scene} (from @code{scene_make}), so that POV-Ray renders
+## pixel for pixel the image @code{rt_render} renders: the camera is written
+## with explicit @code{direction}, @code{right} and @code{up} vectors in the
+## scene's own right-handed, y-up coordinates (POV-Ray uses the vectors as
+## given, so the image is not mirrored), and without anti-aliasing POV-Ray
+## shoots one ray through each pixel centre, as @code{rt_render} does with
+## @qcode{"jitter"}, false.
+##
+## @strong{How the surface shows the material.}  With a directional light
+## (unit direction L) and an orthographic camera (unit direction V toward the
+## viewer) the radiance of an isotropic BRDF depends only on
+## ti = angle (N, L) and to = angle (N, V).  POV-Ray's @code{slope} pattern
+## toward a direction d gives 1 - angle (N, d)/pi, so a pigment made of
+## nested @code{pigment_map}s, @code{slope} toward L outside and toward V
+## inside, is a table of colour over (ti, to) that POV-Ray interpolates
+## bilinearly.  The tables come from @code{scene_slice} (the evaluation
+## @code{rt_render} uses as well), as f(wi, wo) E = radiance / cos (ti): the
+## surfaces have @code{finish @{ diffuse 1 ambient 0 emission 0 @}} and the
+## light has colour 1, so POV-Ray itself multiplies by max (cos ti, 0) and
+## leaves out what is in shadow.  (Emitting the whole radiance with
+## @code{emission 1} would be simpler but emission is never shadowed: the
+## spheres-on-a-plane scene would lose its cast shadows.)
+##
+## A Lafortune @var{material} gets one table per term: the diffuse term and
+## each lobe, summed by an @code{average} pigment (values scaled by the
+## number of terms).  Each table has its own entries, placed where its term
+## bends (see @qcode{"knots"}), so a sharp lobe (exponents in the thousands)
+## gets its entries around its peak and a broad one a few.  A MERL
+## @var{material} gets one table.
+##
+## @strong{What is left out.}  A lobe whose largest radiance anywhere the
+## view reaches is below @qcode{"lobe_tol"} times the largest radiance of
+## the whole material there is dropped.  The tables cover only the angles
+## that visible, lit surfaces reach (outer table: the range of ti; each inner
+## table: the range of to met near its ti), found by casting rays at every
+## pixel centre, corner and edge midpoint, padded by @qcode{"pad"};
+## beyond its ends a @code{pigment_map} repeats its end entry.  Objects that
+## are neither in the view nor able to cast a shadow on what is seen are
+## left out, and so are such mesh faces (conservative bounding-box tests).
+##
+## Options:
+## @table @asis
+## @item @qcode{"entries"} (256)
+## Largest number of entries in each map, 2 to 256 (POV-Ray's limit).
+## @item @qcode{"knots"} (@qcode{"adaptive"})
+## @qcode{"adaptive"}: refine each table where its linear interpolation
+## errs most, until the error is at most @qcode{"table_tol"} or the table
+## is full; @qcode{"uniform"}: @qcode{"entries"} evenly spaced entries.
+## @item @qcode{"table_tol"} (1e-4)
+## Interpolation error allowed, relative to the largest radiance in the view,
+## shared between the tables and between their two levels.  0: use all
+## @qcode{"entries"}.
+## @item @qcode{"lobe_tol"} (1e-4)
+## Lobes contributing less than this fraction of the largest radiance are
+## dropped; 0 keeps every lobe.
+## @item @qcode{"crop"} (true)
+## Restrict the tables to the reached angles; false: ti and to in [0, pi/2].
+## @item @qcode{"cull"} (true)
+## Leave out objects and mesh faces outside the view that cast no shadow
+## into it.
+## @item @qcode{"pad"} (0.02)
+## Margin in radians added around the reached angles.
+## @item @qcode{"dense"} (0: automatic)
+## Samples per axis of the dense tabulation the entries are chosen from;
+## automatic is 4 @qcode{"entries"} + 1, more (up to 2049) for lobes
+## narrower than that grid resolves.
+## @end table
+##
+## The file is written to a temporary file next to @var{file} and renamed.
+## @var{info} has the fields @code{file}, @code{bytes}, @code{terms} (struct
+## array: @code{name}, @code{contribution} (largest radiance relative to the
+## whole), @code{kept}, @code{outer} (entries of the outer map),
+## @code{inner} (entries of each inner map)), @code{entries} (all
+## entries), @code{ti_range}, @code{to_range}, @code{peak},
+## @code{objects} (kept, logical), @code{faces_dropped}, @code{dense} and
+## @code{time} (seconds).
+##
+## Only a directional light with an orthographic camera is supported; other
+## scenes give the error @code{lafortune:povUnsupported}.
+##
+## @example
+## @group
+## scene = scene_make ("sphere");
+## m = struct ("rho_d", [0.1 0.1 0.1], "Cxy", [-1 -1 -1], "Cz", [1 1 1], "e", [30 30 30]);
+## info = pov_write_scene (scene, m, "sphere.pov", "entries", 64);
+## system ("povray +Isphere.pov +Osphere.exr +FE -D File_Gamma=1.0");
+## @end group
+## @end example
+## @seealso{pov_render, scene_slice, rt_render, scene_make}
+## @end deftypefn
+function info = pov_write_scene (scene, material, file, varargin)
+  if (nargin < 3)
+    print_usage ();
+  endif
+  t0 = tic ();
+  fname = "pov_write_scene";
+  opt = parse_opts (varargin, fname,
+                    struct ("entries", 256, "knots", "adaptive", "table_tol", 1e-4,
+                            "lobe_tol", 1e-4, "crop", true, "cull", true, "pad", 0.02,
+                            "dense", 0));
+  opt = check_opts (opt, fname);
+  cam = pov_camera (scene, fname);
+  kind = material_kind (material);
+  if (isempty (kind))
+    error ("lafortune:badMaterial",
+           "%s: MATERIAL must be a Lafortune model or a MERL material, got %s",
+           fname, class (material));
+  endif
+  light = scene.light;
+  if (! strcmp (light.type, "directional") || ! strcmp (cam.type, "orthographic"))
+    error ("lafortune:povUnsupported",
+           "%s: only a directional light with an orthographic camera is supported, got a %s light and a %s camera",
+           fname, light.type, cam.type);
+  endif
+  if (! ischar (file) || isempty (file))
+    error ("lafortune:badFile", "%s: FILE must be a non-empty string", fname);
+  endif
+  L = double (light.direction(:)');
+  if (numel (L) != 3 || ! (norm (L) > 0))
+    error ("lafortune:badScene", "%s: SCENE.light.direction must be a nonzero 3-vector", fname);
+  endif
+  L /= norm (L);
+  V = -cam.f;
+  check_objects (scene.objects, fname);
+
+  ## what the view reaches
+  if (opt.crop || opt.cull)
+    S = pov_cast (scene, cam, L);
+  endif
+  top = pi/2 - 1e-6;             # scene_slice is 0 from pi/2 on
+  if (opt.crop)
+    if (isempty (S.ti))
+      rng_i = [0 top];
+      rng_o = [0 top];
+    else
+      rng_i = [max(0, min(S.ti) - opt.pad), min(top, max(S.ti) + opt.pad)];
+      rng_o = [max(0, min(S.to) - opt.pad), min(top, max(S.to) + opt.pad)];
+    endif
+  else
+    rng_i = [0 top];
+    rng_o = [0 top];
+  endif
+  if (opt.cull)
+    keep = S.keep;
+    faces = S.faces;
+  else
+    keep = true (1, numel (scene.objects));
+    faces = cell (1, numel (scene.objects));
+  endif
+
+  ## the terms, each tabulated densely by scene_slice
+  if (strcmp (kind, "lafortune"))
+    m = check_model (material, fname);
+    terms = {};
+    names = {};
+    if (any (m.rho_d != 0))
+      terms{end+1} = struct ("rho_d", m.rho_d, "Cxy", zeros (0, 3), "Cz", zeros (0, 3),
+                             "e", zeros (0, 3));
+      names{end+1} = "diffuse";
+    endif
+    for k = 1:rows (m.e)
+      terms{end+1} = struct ("rho_d", [0 0 0], "Cxy", m.Cxy(k,:), "Cz", m.Cz(k,:),
+                             "e", m.e(k,:));
+      names{end+1} = sprintf ("lobe %d", k);
+    endfor
+    emax = max ([m.e(:); 0]);
+  else
+    terms = {material};
+    names = {"measured"};
+    emax = 0;
+  endif
+  n = opt.dense;
+  if (n == 0)
+    span = max (diff (rng_i), diff (rng_o));
+    n = min (2049, max (4 * opt.entries + 1, ceil (4 * span * sqrt (emax)) + 1));
+  endif
+  ti = linspace (rng_i(1), rng_i(2), n)';
+  to = linspace (rng_o(1), rng_o(2), n)';
+  if (opt.crop && ! isempty (S.ti))
+    Md = reach_mask (S.ti, S.to, ti, to, opt.pad);
+  else
+    Md = true (n, n);
+  endif
+  nt = numel (terms);
+  R = cell (1, nt);
+  contrib = zeros (1, nt);
+  tot = 0;
+  for q = 1:nt
+    R{q} = scene_slice (scene, terms{q}, ti, to);
+    tot += R{q};
+    contrib(q) = masked_max (R{q}, Md);
+  endfor
+  peak = masked_max (tot, Md);
+  clear tot;
+  if (peak > 0)
+    contrib /= peak;
+  endif
+  kept = contrib > 0 & contrib >= opt.lobe_tol;
+  if (strcmp (kind, "lafortune") && any (strcmp (names, "diffuse")))
+    kept(1) = contrib(1) > 0;          # lobe_tol applies to lobes
+  endif
+
+  ## entries of each kept table
+  nk = nnz (kept);
+  tol = opt.table_tol * peak / max (nk, 1) / 2;
+  c = cos (ti);
+  tabs = struct ("name", names, "contribution", num2cell (contrib), "kept", num2cell (kept),
+                 "outer", 0, "inner", []);
+  body = {};
+  for q = find (kept)
+    T = R{q} ./ c;
+    R{q} = [];
+    Ko = pov_knots (reshape (T, n, 3 * n), c, repmat (Md, 1, 3), tol, opt.entries, opt.knots);
+    io = find (Ko);
+    ## each inner table serves the ti between its neighbours
+    lo = io([1 1:end-1]);
+    hi = io([2:end end]);
+    cs = [zeros(1, n); cumsum(Md, 1)];
+    Mi = (cs(hi+1,:) - cs(lo,:))' > 0;                     # n x numel(io)
+    G = permute (T(io,:,:), [2 3 1]);                      # n x 3 x numel(io)
+    Ki = pov_knots (G, reshape (c(io), 1, 1, []), reshape (Mi, n, 1, []), tol,
+                    opt.entries, opt.knots);
+    tabs(q).outer = numel (io);
+    tabs(q).inner = sum (Ki, 1);
+    T(abs (T) < 1e-12 * peak) = 0;     # no 1e-50s in the file
+    body{end+1} = table_sdl (sprintf ("Lf_term%d", q), names{q}, T * nk, ti, to, io, Ki, L, V);
+  endfor
+
+  ## write
+  tmp = atomic_tmp (file, fname);
+  ok = false;
+  unwind_protect
+    fid = fopen (tmp, "w");
+    if (fid < 0)
+      error ("lafortune:unwritable", "%s: cannot write '%s'", fname, tmp);
+    endif
+    unwind_protect
+      fputs (fid, header_sdl (scene, material, opt, tabs, rng_i, rng_o, peak));
+      fputs (fid, camera_sdl (cam, scene));
+      fputs (fid, light_sdl (scene, L, cam));
+      for q = 1:numel (body)
+        fputs (fid, body{q});
+      endfor
+      fputs (fid, texture_sdl (find (kept)));
+      [osdl, nfd] = objects_sdl (scene.objects, keep, faces);
+      fputs (fid, osdl);
+    unwind_protect_cleanup
+      fclose (fid);
+    end_unwind_protect
+    atomic_commit (tmp, file, fname);
+    ok = true;
+  unwind_protect_cleanup
+    if (! ok && exist (tmp, "file"))
+      unlink (tmp);
+    endif
+  end_unwind_protect
+  d = dir (file);
+  info = struct ("file", file, "bytes", d.bytes, "terms", tabs,
+                 "entries", sum ([tabs.outer]) + sum ([tabs.inner]),
+                 "ti_range", rng_i, "to_range", rng_o, "peak", peak, "objects", keep,
+                 "faces_dropped", nfd, "dense", n, "time", toc (t0));
+endfunction
+
+function opt = check_opts (opt, fname)
+  e = opt.entries;
+  if (! isscalar (e) || ! isnumeric (e) || e != fix (e) || e < 2 || e > 256)
+    error ("lafortune:badOption", "%s: \"entries\" must be an integer from 2 to 256", fname);
+  endif
+  if (! any (strcmp (opt.knots, {"adaptive", "uniform"})))
+    error ("lafortune:badOption", "%s: \"knots\" must be \"adaptive\" or \"uniform\"", fname);
+  endif
+  for nm = {"table_tol", "lobe_tol", "pad"}
+    v = opt.(nm{1});
+    if (! isscalar (v) || ! isnumeric (v) || ! (v >= 0) || ! isfinite (v))
+      error ("lafortune:badOption", "%s: \"%s\" must be a finite scalar >= 0", fname, nm{1});
+    endif
+  endfor
+  for nm = {"crop", "cull"}
+    v = opt.(nm{1});
+    if (! isscalar (v) || ! (islogical (v) || isnumeric (v)))
+      error ("lafortune:badOption", "%s: \"%s\" must be true or false", fname, nm{1});
+    endif
+    opt.(nm{1}) = logical (v);
+  endfor
+  d = opt.dense;
+  if (! isscalar (d) || ! isnumeric (d) || d != fix (d) || (d != 0 && d < opt.entries))
+    error ("lafortune:badOption", "%s: \"dense\" must be 0 (automatic) or an integer >= \"entries\"",
+           fname);
+  endif
+endfunction
+
+function check_objects (ob, fname)
+  if (! isstruct (ob) || ! isfield (ob, "type"))
+    error ("lafortune:badScene", "%s: SCENE.objects must be a struct array with a field type", fname);
+  endif
+  for k = 1:numel (ob)
+    switch (ob(k).type)
+      case "sphere"
+        ok = numel (ob(k).center) == 3 && isscalar (ob(k).radius) && ob(k).radius > 0;
+      case "plane"
+        ok = numel (ob(k).point) == 3 && numel (ob(k).normal) == 3 && norm (ob(k).normal) > 0;
+      case "mesh"
+        ok = (columns (ob(k).vertices) == 3 && columns (ob(k).faces) == 3
+              && all (ob(k).faces(:) >= 1) && all (ob(k).faces(:) <= rows (ob(k).vertices))
+              && (isempty (ob(k).normals)
+                  || isequal (size (ob(k).normals), size (ob(k).vertices))));
+      otherwise
+        error ("lafortune:badScene", "%s: unknown object type '%s'", fname, ob(k).type);
+    endswitch
+    if (! ok)
+      error ("lafortune:badScene", "%s: SCENE.objects(%d) is not a valid %s", fname, k, ob(k).type);
+    endif
+  endfor
+endfunction
+
+## reachable cells of the dense (ti, to) grid: for each ti row, the range of
+## to of the samples within PAD of it, widened by PAD
+function Md = reach_mask (sti, sto, ti, to, pad)
+  n = numel (ti);
+  h = max (ti(2) - ti(1), eps);
+  r = min (max (round ((sti - ti(1)) / h) + 1, 1), n);
+  lo0 = accumarray (r, sto, [n 1], @min, inf);
+  hi0 = accumarray (r, sto, [n 1], @max, -inf);
+  lo = lo0;
+  hi = hi0;
+  w = ceil (pad / h);
+  for s = 1:w
+    lo(1+s:end) = min (lo(1+s:end), lo0(1:end-s));
+    lo(1:end-s) = min (lo(1:end-s), lo0(1+s:end));
+    hi(1+s:end) = max (hi(1+s:end), hi0(1:end-s));
+    hi(1:end-s) = max (hi(1:end-s), hi0(1+s:end));
+  endfor
+  Md = to' >= lo - pad & to' <= hi + pad;
+endfunction
+
+function v = masked_max (R, M)
+  v = 0;
+  for ch = 1:size (R, 3)
+    x = R(:,:,ch);
+    if (any (M(:)))
+      v = max (v, max (x(M)));
+    endif
+  endfor
+endfunction
+
+function s = vec (v)
+  v(v == 0) = 0;                 # no "-0"
+  s = sprintf ("<%.12g, %.12g, %.12g>", v);
+endfunction
+
+## one table: slope toward L outside (ti, descending so that the slope value
+## 1 - ti/pi ascends), slope toward V inside
+function s = table_sdl (id, name, T, ti, to, io, Ki, L, V)
+  parts = cell (1, numel (io) + 2);
+  parts{1} = sprintf (["// %s: %d outer entries (angle to the light), inner entries per outer: %d to %d\n" ...
+                       "#declare %s = pigment { slope { %s } pigment_map {\n"],
+                      name, numel (io), min (sum (Ki, 1)), max (sum (Ki, 1)), id, vec (L));
+  for k = numel (io):-1:1
+    jo = flipud (find (Ki(:,k)));
+    v = [1 - to(jo)'/pi; reshape(T(io(k),jo,:), numel (jo), 3)'];
+    parts{numel (io) - k + 2} = [sprintf("[%.9g slope { %s } pigment_map {\n", 1 - ti(io(k))/pi, vec (V)), ...
+                                 sprintf("[%.9g rgb <%.7g,%.7g,%.7g>]\n", v), "}]\n"];
+  endfor
+  parts{end} = "} }\n";
+  s = [parts{:}];
+endfunction
+
+function s = header_sdl (scene, material, opt, tabs, rng_i, rng_o, peak)
+  nm = "";
+  if (isfield (material, "name") && ischar (material.name))
+    nm = material.name;
+  endif
+  sname = "";
+  if (isfield (scene, "name") && ischar (scene.name))
+    sname = scene.name;
+  endif
+  s = sprintf (["// POV-Ray 3.7 scene written by pov_write_scene (lafortune package)\n" ...
+                "// scene '%s', material '%s', %d x %d pixels\n" ...
+                "// render: povray +I<this> +O<out>.exr +FE +W%d +H%d -A File_Gamma=1.0\n" ...
+                "// tables of f(wi,wo)*E over ti = angle(N,L) in [%.6g, %.6g], to = angle(N,V) in [%.6g, %.6g] rad\n" ...
+                "// (slope value = 1 - angle/pi); knots %s, entries <= %d, table_tol %g, lobe_tol %g,\n" ...
+                "// largest radiance %.6g\n"],
+               sname, nm, scene.width, scene.height, scene.width, scene.height,
+               rng_i, rng_o, opt.knots, opt.entries, opt.table_tol, opt.lobe_tol, peak);
+  for q = 1:numel (tabs)
+    if (tabs(q).kept)
+      st = "kept";
+    else
+      st = "left out";
+    endif
+    s = [s, sprintf("// %s: largest radiance %.3g of the whole, %s\n", tabs(q).name,
+                    tabs(q).contribution, st)];
+  endfor
+  bg = [0 0 0];
+  if (isfield (scene, "background") && numel (scene.background) >= 1)
+    bg = double (scene.background(:)') .* [1 1 1];
+  endif
+  s = [s, sprintf("#version 3.7;\nglobal_settings { assumed_gamma 1.0 ambient_light rgb 0 }\n"), ...
+       sprintf("background { rgb %s }\n", vec (bg))];
+endfunction
+
+function s = camera_sdl (cam, scene)
+  s = sprintf (["// right-handed, y-up world; explicit vectors, so POV-Ray does not mirror\n" ...
+                "camera { orthographic location %s direction %s right %s up %s }\n"],
+               vec (cam.eye), vec (cam.f), vec (cam.r * cam.w), vec (cam.u * cam.h));
+endfunction
+
+function s = light_sdl (scene, L, cam)
+  ## far enough that every object is in front of it
+  ob = scene.objects;
+  ext = norm (cam.eye - double (scene.camera.target(:)')) + cam.w + cam.h;
+  for k = 1:numel (ob)
+    switch (ob(k).type)
+      case "sphere"
+        ext = max (ext, norm (ob(k).center) + ob(k).radius);
+      case "plane"
+        ext = max (ext, norm (ob(k).point));
+      case "mesh"
+        ext = max (ext, max (sqrt (sum (double (ob(k).vertices) .^ 2, 2))));
+    endswitch
+  endfor
+  ext += norm (cam.eye);
+  s = sprintf ("light_source { %s color rgb 1 parallel point_at <0, 0, 0> }\n",
+               vec (L * 1000 * ext));
+endfunction
+
+function s = texture_sdl (q)
+  fin = "finish { ambient 0 emission 0 diffuse 1 brilliance 1 specular 0 phong 0 reflection 0 }";
+  if (isempty (q))
+    pig = "pigment { rgb 0 }";
+  elseif (numel (q) == 1)
+    pig = sprintf ("pigment { Lf_term%d }", q);
+  else
+    pig = ["pigment { average pigment_map {", sprintf(" [1 Lf_term%d]", q), " } }"];
+  endif
+  s = sprintf ("// POV-Ray applies max(cos ti, 0) and the shadows\n#declare Lf_tex = texture { %s %s }\n",
+               pig, fin);
+endfunction
+
+function [s, nfd] = objects_sdl (ob, keep, faces)
+  parts = {};
+  nfd = 0;
+  for k = 1:numel (ob)
+    if (! keep(k))
+      if (strcmp (ob(k).type, "mesh"))
+        nfd += rows (ob(k).faces);
+      endif
+      continue;
+    endif
+    switch (ob(k).type)
+      case "sphere"
+        parts{end+1} = sprintf ("sphere { %s, %.12g texture { Lf_tex } }\n",
+                                vec (ob(k).center), ob(k).radius);
+      case "plane"
+        nn = double (ob(k).normal(:)');
+        nn /= norm (nn);
+        parts{end+1} = sprintf ("plane { %s, %.12g texture { Lf_tex } }\n", vec (nn),
+                                nn * double (ob(k).point(:)));
+      case "mesh"
+        fc = double (ob(k).faces);
+        if (! isempty (faces{k}))
+          nfd += nnz (! faces{k});
+          fc = fc(faces{k},:);
+        endif
+        [used, ~, j] = unique (fc(:));
+        fc = reshape (j, size (fc)) - 1;
+        vx = double (ob(k).vertices(used,:));
+        p = {sprintf("mesh2 {\n vertex_vectors { %d,\n", rows (vx)), ...
+             sprintf("<%.9g,%.9g,%.9g>\n", vx')};
+        if (! isempty (ob(k).normals))
+          nv = double (ob(k).normals(used,:));
+          p(end+1:end+2) = {sprintf(" }\n normal_vectors { %d,\n", rows (nv)), ...
+                            sprintf("<%.9g,%.9g,%.9g>\n", nv')};
+        endif
+        p(end+1:end+3) = {sprintf(" }\n face_indices { %d,\n", rows (fc)), ...
+                          sprintf("<%d,%d,%d>\n", fc'), " }\n texture { Lf_tex }\n}\n"};
+        parts{end+1} = [p{:}];
+    endswitch
+  endfor
+  s = [parts{:}];
+endfunction
+
+%!shared sc, m
+%! sc.name = "t"; sc.width = 8; sc.height = 6; sc.spp = 1; sc.seed = 1; sc.background = [0 0 0];
+%! sc.camera = struct ("type", "orthographic", "eye", [0 0 5], "target", [0 0 0], "up", [0 1 0],
+%!                     "extent", 2.5, "fov", []);
+%! sc.light = struct ("type", "directional", "direction", [0 0.6 0.8], "position", [],
+%!                    "irradiance", 2);
+%! sc.objects = struct ("type", "sphere", "center", [0 0 0], "radius", 1, "point", [],
+%!                      "normal", [], "vertices", [], "faces", [], "normals", []);
+%! m = struct ("rho_d", [0.1 0.2 0.3], "Cxy", [-1 -1 -1], "Cz", [1 1 1], "e", [30 30 30]);
+
+%!test
+%! f = [tempname() ".pov"];
+%! unwind_protect
+%!   info = pov_write_scene (sc, m, f, "entries", 16);
+%!   s = fileread (f);
+%!   assert (info.bytes, numel (s));
+%!   assert (! isempty (strfind (s, "orthographic location <0, 0, 5> direction <0, 0, -1> right <3.33333333333, 0, 0> up <0, 2.5, 0>")));
+%!   assert (! isempty (strfind (s, "slope { <0, 0.6, 0.8> } pigment_map")));
+%!   assert (! isempty (strfind (s, "average pigment_map { [1 Lf_term1] [1 Lf_term2] }")));
+%!   assert ({info.terms.name}, {"diffuse", "lobe 1"});
+%!   assert ([info.terms.outer] <= 16 & [info.terms.outer] >= 2);
+%!   assert (all ([info.terms.inner] <= 16));
+%!   ## the diffuse table is flat in to: 2 inner entries suffice
+%!   assert (all (info.terms(1).inner == 2));
+%!   ## entries ascend in every map
+%!   lines = strsplit (s, "\n");
+%!   last = [-1 -1];
+%!   for i = 1:numel (lines)
+%!     ln = lines{i};
+%!     if (strncmp (ln, "#declare Lf_term", 16))
+%!       last(1) = -1;
+%!     elseif (strncmp (ln, "[", 1))
+%!       x = sscanf (ln(2:end), "%f", 1);
+%!       lvl = 1 + isempty (strfind (ln, "slope"));
+%!       assert (x > last(lvl));
+%!       last(lvl) = x;
+%!       if (lvl == 1)
+%!         last(2) = -1;
+%!       endif
+%!     endif
+%!   endfor
+%! unwind_protect_cleanup
+%!   unlink (f);
+%! end_unwind_protect
+
+%!test
+%! ## the tabulated values are scene_slice / cos(ti), scaled by the number of terms
+%! f = [tempname() ".pov"];
+%! unwind_protect
+%!   m1 = m; m1.rho_d = [0 0 0];
+%!   info = pov_write_scene (sc, m1, f, "entries", 8, "knots", "uniform", "crop", false);
+%!   lines = strsplit (fileread (f), "\n");
+%!   x = [];
+%!   for i = 1:numel (lines)
+%!     if (! isempty (strfind (lines{i}, "slope {")) && lines{i}(1) == "[")
+%!       so = sscanf (lines{i}(2:end), "%f", 1);
+%!     elseif (strncmp (lines{i}, "[", 1))
+%!       x(end+1,:) = [so sscanf(strrep (strrep (lines{i}, "rgb <", " "), ",", " ")(2:end), "%f")'];
+%!     endif
+%!   endfor
+%!   assert (rows (x), 64);
+%!   ti = (1 - x(:,1)) * pi; to = (1 - x(:,2)) * pi;
+%!   for i = 1:rows (x)
+%!     R(i,:) = squeeze (scene_slice (sc, m1, ti(i), to(i)))' / cos (ti(i));
+%!   endfor
+%!   assert (x(:,3:5), R, 1e-6 * max (R(:)));
+%!   assert (max (R(:)) > 1);
+%! unwind_protect_cleanup
+%!   unlink (f);
+%! end_unwind_protect
+
+%!test
+%! ## lobe_tol drops a lobe that never shows; uniform knots fill the maps
+%! f = [tempname() ".pov"];
+%! unwind_protect
+%!   m2 = m; m2.Cxy(2,:) = [0.1 0.1 0.1]; m2.Cz(2,:) = [0.2 0.2 0.2]; m2.e(2,:) = [40 40 40];
+%!   info = pov_write_scene (sc, m2, f, "entries", 8, "knots", "uniform");
+%!   assert ([info.terms.kept], [true true false]);
+%!   assert (info.terms(3).contribution < 1e-20);
+%!   assert (info.terms(2).outer, 8);
+%!   assert (isempty (strfind (fileread (f), "Lf_term3 =")));
+%! unwind_protect_cleanup
+%!   unlink (f);
+%! end_unwind_protect
+
+%!error <Invalid call> pov_write_scene (1, 2)
+%!error id=lafortune:badScene pov_write_scene (1, struct ("rho_d", [1 1 1]), "x.pov")
+%!error id=lafortune:badMaterial pov_write_scene (sc, 3, "x.pov")
+%!error id=lafortune:badOption pov_write_scene (sc, m, "x.pov", "entries", 300)
+%!error id=lafortune:badOption pov_write_scene (sc, m, "x.pov", "knots", "cubic")
+%!error id=lafortune:badOption pov_write_scene (sc, m, "x.pov", "bogus", 1)
+%!error id=lafortune:unwritable pov_write_scene (sc, m, "/nonexistent-dir/x.pov")
+%!error id=lafortune:povUnsupported pov_write_scene (setfield (sc, "light", setfield (sc.light, "type", "point")), m, "x.pov")

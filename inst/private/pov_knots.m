@@ -1,0 +1,136 @@
+## Copyright (C) 2026 The lafortune developers
+## SPDX-License-Identifier: GPL-3.0-or-later
+
+## -*- texinfo -*-
+## @deftypefn {} {@var{K} =} pov_knots (@var{G}, @var{W}, @var{M}, @var{tol}, @var{nmax}, @var{mode})
+## Choose the entries of piecewise-linear tables (private, for
+## @code{pov_write_scene}).
+##
+## @var{G} is @var{n} x @var{m} x @var{B}: @var{B} independent tables, each
+## sampled densely at @var{n} points along the table axis (dimension 1); the
+## @var{m} columns are functions that share the entries (the error is the
+## maximum over them).  @var{W} (weights) and @var{M} (logical mask: where the
+## error counts) broadcast to the size of @var{G}.  For each table the first
+## and last rows with any @var{M} are always entries; rows outside them are
+## not interpolated.
+##
+## @var{mode} @qcode{"uniform"}: @var{nmax} entries evenly spaced between those
+## two.  @qcode{"adaptive"}: refinement, starting from the two end entries;
+## each pass splits every interval whose largest weighted error
+## |@var{W} (@var{G} - linear interpolation)| exceeds @var{tol} at the dense
+## point of that largest error, until no interval exceeds @var{tol} or the
+## table has @var{nmax} entries (then the worst intervals are split first).
+## Without the @var{nmax} limit the result is that of one-at-a-time greedy
+## refinement (splitting one interval does not change the others); passes are
+## vectorised over all tables.  With sharp features (narrow lobes) this puts
+## the entries where the function bends.
+##
+## @var{K} is @var{n} x @var{B} logical: the entries of each table.
+## @end deftypefn
+function K = pov_knots (G, W, M, tol, nmax, mode)
+  [n, m, B] = size (G);
+  W = W .* ones (size (G));
+  M = logical (M) & true (size (G));
+  act = reshape (any (M, 2), n, B);
+  K = false (n, B);
+  first = ones (1, B);
+  last = n * ones (1, B);
+  for b = 1:B
+    r = find (act(:,b));
+    if (! isempty (r))
+      first(b) = r(1);
+      last(b) = r(end);
+    endif
+  endfor
+  if (strcmp (mode, "uniform"))
+    for b = 1:B
+      K(unique (round (linspace (first(b), last(b), nmax))), b) = true;
+    endfor
+    return;
+  endif
+  K(sub2ind ([n B], first, 1:B)) = true;
+  K(sub2ind ([n B], last, 1:B)) = true;
+  if (B == 1)
+    K = greedy_one (G, W, M, tol, nmax, first, last, K);
+  else
+    K = refine_batch (G, W, M, tol, nmax, first, last, K);
+  endif
+endfunction
+
+## One table with many columns: one interval at a time, recomputing only the
+## two halves of the interval just split.
+function K = greedy_one (G, W, M, tol, nmax, first, last, K)
+  kn = [first; last];
+  [e, a] = interval_err (G, W, M, first, last);
+  while (numel (kn) < nmax)
+    [emax, j] = max (e);
+    if (! (emax > tol))
+      break;
+    endif
+    p = a(j);
+    [e1, a1] = interval_err (G, W, M, kn(j), p);
+    [e2, a2] = interval_err (G, W, M, p, kn(j+1));
+    kn = [kn(1:j); p; kn(j+1:end)];
+    e = [e(1:j-1); e1; e2; e(j+1:end)];
+    a = [a(1:j-1); a1; a2; a(j+1:end)];
+  endwhile
+  K(kn) = true;
+endfunction
+
+function [emax, amax] = interval_err (G, W, M, lo, hi)
+  emax = 0;
+  amax = lo;
+  if (hi - lo < 2)
+    return;
+  endif
+  r = (lo+1:hi-1)';
+  t = (r - lo) / (hi - lo);
+  E = W(r,:) .* abs (G(r,:) - ((1 - t) .* G(lo,:) + t .* G(hi,:)));
+  E(! M(r,:)) = 0;
+  [emax, i] = max (E(:));
+  amax = r(mod (i - 1, numel (r)) + 1);
+endfunction
+
+## Many tables with few columns: passes vectorised over all tables.
+function K = refine_batch (G, W, M, tol, nmax, first, last, K)
+  [n, m, B] = size (G);
+  idx = (1:n)';
+  M &= reshape (idx >= first & idx <= last, n, 1, B);
+  off = n * (0:m-1) + n * m * reshape (0:B-1, 1, 1, B);   # 1 x m x B
+  while (true)
+    ## linear interpolation between the current entries, all tables at once
+    prev = max (cummax (K .* idx, 1), 1);
+    nxt = min (flipud (cummin (flipud (K .* idx + (! K) * (n + 1)), 1)), n);
+    t = reshape ((idx - prev) ./ max (nxt - prev, 1), n, 1, B);
+    lin = (1 - t) .* G(reshape (prev, n, 1, B) + off) ...
+          + t .* G(reshape (nxt, n, 1, B) + off);
+    E = W .* abs (G - lin);
+    E(! M) = 0;
+    E = reshape (max (E, [], 2), n, B);
+    E(K) = 0;
+    ## split every interval whose error exceeds TOL at its worst point
+    key = prev + n * (0:B-1);                  # interval = its left entry
+    emax = accumarray (key(:), E(:), [n*B 1], @max);
+    cand = find (E > tol & E >= reshape (emax(key), n, B));
+    if (isempty (cand))
+      break;
+    endif
+    [~, ia] = unique (key(cand), "first");
+    sel = cand(ia);
+    b = ceil (sel / n);
+    room = nmax - sum (K, 1);
+    cnt = accumarray (b, 1, [B 1])';
+    over = find (cnt > room);
+    drop = false (size (sel));
+    for j = over                               # keep the worst intervals
+      in = find (b == j);
+      [~, o] = sort (E(sel(in)), "descend");
+      drop(in(o(room(j)+1:end))) = true;
+    endfor
+    sel(drop) = [];
+    if (isempty (sel))
+      break;
+    endif
+    K(sel) = true;
+  endwhile
+endfunction
