@@ -104,7 +104,7 @@ function info = pov_write_scene (scene, material, file, varargin)
   t0 = tic ();
   fname = "pov_write_scene";
   opt = parse_opts (varargin, fname,
-                    struct ("entries", 256, "knots", "adaptive", "table_tol", 1e-4,
+                    struct ("entries", 256, "knots", "adaptive", "table_tol", 1e-3,
                             "lobe_tol", 1e-4, "crop", true, "cull", true, "pad", 0.02,
                             "dense", 0));
   opt = check_opts (opt, fname);
@@ -181,7 +181,7 @@ function info = pov_write_scene (scene, material, file, varargin)
   n = opt.dense;
   if (n == 0)
     span = max (diff (rng_i), diff (rng_o));
-    n = min (2049, max (4 * opt.entries + 1, ceil (4 * span * sqrt (emax)) + 1));
+    n = min (2049, max (2 * opt.entries + 1, ceil (8 * span * sqrt (emax)) + 1));
   endif
   ti = linspace (rng_i(1), rng_i(2), n)';
   to = linspace (rng_o(1), rng_o(2), n)';
@@ -216,8 +216,9 @@ function info = pov_write_scene (scene, material, file, varargin)
   tabs = struct ("name", names, "contribution", num2cell (contrib), "kept", num2cell (kept),
                  "outer", 0, "inner", []);
   body = {};
+  gam = acos (max (min (L * V', 1), -1));
   for q = find (kept)
-    T = R{q} ./ c;
+    T = extend_c1 (R{q} ./ c, ti, to, gam);
     R{q} = [];
     Ko = pov_knots (reshape (T, n, 3 * n), c, repmat (Md, 1, 3), tol, opt.entries, opt.knots);
     io = find (Ko);
@@ -340,6 +341,34 @@ function Md = reach_mask (sti, sto, ti, to, pad)
     hi(1:end-s) = max (hi(1:end-s), hi0(1+s:end));
   endfor
   Md = to' >= lo - pad & to' <= hi + pad;
+endfunction
+
+## No normal reaches (ti, to) outside |ti - gamma| <= to <= ti + gamma, where
+## scene_slice clamps; that leaves a crease along the boundary (the specular
+## peak lies on it), which linear interpolation across it would smear over a
+## whole table cell.  Continue each row linearly (in to) from the boundary
+## instead: the table is then smooth to first order across it.  Extrapolated
+## values are kept >= 0.
+function T = extend_c1 (T, ti, to, gam)
+  n = numel (to);
+  lo = abs (ti - gam);
+  hi = min (ti + gam, 2 * pi - ti - gam);
+  in = to' >= lo & to' <= hi;                   # n x n
+  rowsok = sum (in, 2) >= 2;
+  j1 = n + 1 - sum (cummax (in, 2), 2);         # first reachable column
+  j2 = sum (cummax (fliplr (in), 2), 2);        # last
+  for i = find (rowsok)'
+    a = j1(i);
+    b = j2(i);
+    if (a > 1)
+      s = (T(i,a+1,:) - T(i,a,:)) / (to(a+1) - to(a));
+      T(i,1:a-1,:) = max (T(i,a,:) + s .* (to(1:a-1)' - to(a)), 0);
+    endif
+    if (b < n)
+      s = (T(i,b,:) - T(i,b-1,:)) / (to(b) - to(b-1));
+      T(i,b+1:n,:) = max (T(i,b,:) + s .* (to(b+1:n)' - to(b)), 0);
+    endif
+  endfor
 endfunction
 
 function v = masked_max (R, M)

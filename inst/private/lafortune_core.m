@@ -18,7 +18,7 @@ function [f, J] = lafortune_core (p, sxy, sz)
   LOGMAX = 300;
   n = numel (sxy);
   nl = (numel (p) - 1) / 3;
-  f = repmat (p(1) / pi, n, 1);
+  f = zeros (n, 1) + p(1) / pi;
   if (nargout > 1)
     J = zeros (n, numel (p));
     J(:,1) = 1 / pi;
@@ -28,34 +28,29 @@ function [f, J] = lafortune_core (p, sxy, sz)
     cz = p(3*k);
     e = p(3*k+1);
     b = cxy * sxy + cz * sz;
-    pos = b > 0;
-    if (! any (pos))
-      continue;
-    endif
-    bp = b(pos);
-    lb = log (bp);
+    on = b > 0;
+    ## log of the clamped base; realmin keeps it finite, ON zeroes the lobe
+    lb = log (max (b, realmin));
     if (e == 0)
-      L = ones (size (bp));
+      L = double (on);
     else
       t = e * lb;
-      capped = t > LOGMAX;
-      L = exp (min (t, LOGMAX));
+      L = exp (max (min (t, LOGMAX), -700)) .* on;   # no denormals: they are slow
     endif
-    f(pos) += L;
+    f += L;
     if (nargout > 1)
       if (e == 0)
-        dLdb = zeros (size (bp));
-        dLde = lb;
+        dLdb = zeros (n, 1);
+        dLde = lb .* on;
       else
-        ## d/db of b^e = e b^(e-1) = e * L / b, formed in log space
-        dLdb = e * exp (min (min (t, LOGMAX) - lb, LOGMAX));
-        dLde = L .* lb;
-        dLdb(capped) = 0;
-        dLde(capped) = 0;
+        ## d/db of b^e = e b^(e-1), formed in log space; 0 where capped
+        live = on & (t <= LOGMAX);
+        dLdb = e * exp (max (min (t - lb, LOGMAX), -700)) .* live;
+        dLde = L .* lb .* live;
       endif
-      J(pos,3*k-1) = dLdb .* sxy(pos);
-      J(pos,3*k)   = dLdb .* sz(pos);
-      J(pos,3*k+1) = dLde;
+      J(:,3*k-1) = dLdb .* sxy;
+      J(:,3*k)   = dLdb .* sz;
+      J(:,3*k+1) = dLde;
     endif
   endfor
 endfunction
