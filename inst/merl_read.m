@@ -125,16 +125,18 @@ endfunction
 
 %!test
 %! ## the stand-in files in shared/, when present
-%! p = fullfile (fileparts (mfilename ("fullpath")), "..", "..", "shared", "data", "merl-proxy", "red-plastic.binary");
-%! if (! exist (p, "file"))
-%!   p = fullfile (pwd, "..", "shared", "data", "merl-proxy", "red-plastic.binary");
+%! ## MERL_PROXY_DIR is set by `make check`; by default ../shared/data/merl-proxy
+%! d = getenv ("MERL_PROXY_DIR");
+%! if (isempty (d))
+%!   d = fullfile (pwd, "..", "shared", "data", "merl-proxy");
 %! endif
+%! p = fullfile (d, "red-plastic.binary");
 %! if (exist (p, "file"))
 %!   b = merl_read (p);
 %!   assert (b.name, "red-plastic");
 %!   assert (nnz (b.valid) > 1e6);
 %! else
-%!   printf ("skipped: ../shared/data/merl-proxy absent\n");
+%!   printf ("skipped: %s absent\n", p);
 %! endif
 
 %!function bad_file (f, bytes, precision = "uint8", arch = "ieee-le")

@@ -1,0 +1,75 @@
+# lafortune: Lafortune-model fits of measured BRDF data (GNU Octave package)
+#
+#   make reproduce   the paper's results in results/ (fits, renders, PSNR, report)
+#   make check       build the package, install it into a scratch prefix, run all tests
+#   make bench       benchmark tables (fit speed, lookups, renders, EXR, POV-Ray)
+#   make dist        lafortune-<version>.tar.gz for `pkg install`
+#   make install     pkg install the tarball for the current user
+#   make deps        install missing Debian packages (as root) or say how
+
+SHELL := /bin/bash
+VERSION := $(shell sed -n 's/^Version: *//p' DESCRIPTION)
+TARBALL := lafortune-$(VERSION).tar.gz
+OCTAVE ?= octave-cli
+OCT := $(OCTAVE) --no-gui --norc --no-history
+# the MERL-format stand-ins shipped beside the project (tests, benchmarks)
+MERL_PROXY_DIR ?= $(abspath ../shared/data/merl-proxy)
+export MERL_PROXY_DIR
+# real MERL .binary files, when a user has them (make reproduce)
+MERL_DIR ?= data/merl
+QUICK ?= 0
+DEB_PACKAGES := octave octave-optim liboctave-dev libopenexr-dev pkg-config povray gnuplot-nox fonts-dejavu-core
+
+.PHONY: all deps check bench dist install reproduce clean distclean
+
+all: dist
+
+deps:
+	@missing=""; \
+	for p in $(DEB_PACKAGES); do \
+	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" || missing="$$missing $$p"; \
+	done; \
+	if [ -z "$$missing" ]; then echo "deps: all Debian packages present"; exit 0; fi; \
+	if [ "$$(id -u)" = 0 ]; then \
+	  echo "deps: installing$$missing"; \
+	  apt-get update -q && DEBIAN_FRONTEND=noninteractive apt-get install -y -q $$missing; \
+	else \
+	  echo "deps: missing Debian packages:$$missing"; \
+	  echo "deps: run as root:  apt-get update && apt-get install -y$$missing"; \
+	  exit 1; \
+	fi
+	@mkdir -p $(HOME)/.local/share/octave
+
+# the package's files: tracked or new (not ignored) files under inst/ and src/
+PKG_FILES = DESCRIPTION COPYING INDEX NEWS README.md \
+  $(shell git ls-files --cached --others --exclude-standard inst src 2>/dev/null || find inst src -type f)
+
+dist: $(TARBALL)
+
+$(TARBALL): $(PKG_FILES)
+	@rm -rf build/lafortune-$(VERSION) && mkdir -p build/lafortune-$(VERSION)
+	@tar cf - $(filter-out %.oct %.o %.cc-tst,$(PKG_FILES)) | tar xf - -C build/lafortune-$(VERSION)
+	@tar czf $(TARBALL).tmp -C build lafortune-$(VERSION) && mv $(TARBALL).tmp $(TARBALL)
+	@echo "dist: $(TARBALL)"
+
+install: deps dist
+	$(OCT) --eval 'warning ("off", "Octave:shadowed-function"); pkg install $(TARBALL)'
+
+check: deps dist
+	$(OCT) scripts/run_tests.m $(abspath $(TARBALL))
+
+bench: deps
+	$(MAKE) -C src
+	@for b in scripts/bench_*.m; do echo "== $$b"; $(OCT) --path src $$b || exit 1; echo; done
+
+reproduce: deps
+	$(MAKE) -C src
+	@$(OCT) --path src --eval 'addpath ("inst"); addpath ("scripts"); reproduce ("$(MERL_DIR)", $(QUICK))' \
+	  || { echo "reproduce: failed"; exit 1; }
+
+clean:
+	rm -rf build $(TARBALL) $(TARBALL).tmp
+	$(MAKE) -C src clean
+
+distclean: clean
+	rm -rf results
