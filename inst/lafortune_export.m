@@ -217,5 +217,6 @@ endfunction
 %!error id=lafortune:badModel lafortune_export (struct ("rho_d", 1), "x.json", "json")
 
 %!test
+%! assert (strncmp (d, tempdir (), numel (tempdir ())));   # only our scratch folder
 %! confirm_recursive_rmdir (false, "local");
 %! rmdir (d, "s");

@@ -119,5 +119,6 @@ endfunction
 %!error <Cxy must hold 2 x 3> fid = fopen (fullfile (d, "c.json"), "w"); fputs (fid, "{\"format\": \"lafortune-model\", \"nlobes\": 2, \"rho_d\": [0,0,0], \"Cxy\": [1,2,3], \"Cz\": [[1,2,3],[1,2,3]], \"e\": [[1,2,3],[1,2,3]]}"); fclose (fid); lafortune_import (fullfile (d, "c.json"))
 
 %!test
+%! assert (strncmp (d, tempdir (), numel (tempdir ())));   # only our scratch folder
 %! confirm_recursive_rmdir (false, "local");
 %! rmdir (d, "s");

@@ -126,11 +126,11 @@ endfunction
 %!test
 %! ## the stand-in files in shared/, when present
 %! ## MERL_PROXY_DIR is set by `make check`; by default ../shared/data/merl-proxy
-%! d = getenv ("MERL_PROXY_DIR");
-%! if (isempty (d))
-%!   d = fullfile (pwd, "..", "shared", "data", "merl-proxy");
+%! pd = getenv ("MERL_PROXY_DIR");
+%! if (isempty (pd))
+%!   pd = fullfile (pwd, "..", "shared", "data", "merl-proxy");
 %! endif
-%! p = fullfile (d, "red-plastic.binary");
+%! p = fullfile (pd, "red-plastic.binary");
 %! if (exist (p, "file"))
 %!   b = merl_read (p);
 %!   assert (b.name, "red-plastic");
@@ -153,5 +153,7 @@ endfunction
 %!error <holds NaN or Inf> fid = fopen (fullfile (d, "nan"), "w"); fwrite (fid, [90 90 180], "int32"); fwrite (fid, [1 NaN zeros(1, 3*1458000-2)], "float64"); fclose (fid); merl_read (fullfile (d, "nan"))
 %!error id=lafortune:badFile merl_read (42)
 %!test
+%! ## remove only the scratch folder this file made
+%! assert (strncmp (d, tempdir (), numel (tempdir ())));
 %! confirm_recursive_rmdir (false, "local");
 %! rmdir (d, "s");

@@ -88,6 +88,7 @@ endfunction
 %! r2 = merl_read (f);
 %! assert (isequal (r2.data, r.data));
 %! assert (numel (dir (d)), 3);   # ., .. and x.binary
+%! assert (strncmp (d, tempdir (), numel (tempdir ())));   # only our scratch folder
 %! confirm_recursive_rmdir (false, "local");
 %! rmdir (d, "s");
 
