@@ -47,22 +47,38 @@ function [rgb, valid] = merl_eval (brdf, wi, wo, method = "nearest")
   rgb = zeros (n, 3);
   valid = false (n, 1);
   above = wi(:,3) > 0 & wo(:,3) > 0;
-  if (! any (above))
-    return;
+  all_above = all (above);
+  if (! all_above)
+    if (! any (above))
+      return;
+    endif
+    wi = wi(above,:);
+    wo = wo(above,:);
   endif
-  [th, td, pd] = merl_angles (wi(above,:), wo(above,:));
-  ch = sqrt (max (th, 0) / (pi/2)) * 90;
-  cd = td / (pi/2) * 90;
-  cp = pd / pi * 180;
   if (strcmp (method, "nearest"))
-    ih = min (max (floor (ch), 0), 89);
-    id = min (max (floor (cd), 0), 89);
-    ip = min (max (floor (cp), 0), 179);
-    idx = (ih * 90 + id) * 180 + ip + 1;
+    ## in cache-sized chunks: the arithmetic is memory bound
+    m = rows (wi);
+    idx = zeros (m, 1);
+    B = 32768;
+    for s = 1:B:m
+      k = s:min (s + B - 1, m);
+      [th, td, pd] = merl_angles (wi(k,:), wo(k,:));
+      ## the reference reader's own order of operations
+      ih = min (floor (sqrt ((th / (pi / 2)) * 90 * 90)), 89);
+      id = min (floor (td / (pi * 0.5) * 90), 89);
+      ip = min (floor (pd / pi * 360 / 2), 179);
+      idx(k) = (ih * 90 + id) * 180 + ip + 1;
+    endfor
     v = brdf.data(idx,:);
     ok = brdf.valid(idx);
-    v(! ok,:) = 0;
+    if (! all (ok))
+      v(! ok,:) = 0;
+    endif
   else
+    [th, td, pd] = merl_angles (wi, wo);
+    ch = sqrt (max (th, 0) / (pi/2)) * 90;
+    cd = td / (pi/2) * 90;
+    cp = pd / pi * 180;
     ch = min (max (ch, 0), 89);
     cd = min (max (cd, 0), 89);
     cp = min (max (cp, 0), 180);
@@ -94,8 +110,13 @@ function [rgb, valid] = merl_eval (brdf, wi, wo, method = "nearest")
     v = v ./ max (wsum, realmin);
     v(! ok,:) = 0;
   endif
-  rgb(above,:) = v;
-  valid(above) = ok;
+  if (all_above)
+    rgb = v;
+    valid = ok;
+  else
+    rgb(above,:) = v;
+    valid(above) = ok;
+  endif
 endfunction
 
 %!function b = __synth ()

@@ -17,21 +17,25 @@ function [wi, wo] = check_dirs (wi, wo, fname)
              "%s: %s must be a real N x 3 numeric array of unit directions, got %s %s",
              fname, names{k}, class (a), mat2str (size (a)));
     endif
-    if (! all (isfinite (a(:))))
-      error ("lafortune:badDirections",
-             "%s: %s must be finite, found NaN or Inf", fname, names{k});
+    if (! isa (a, "double"))
+      a = double (a);
     endif
-    n = sqrt (sum (double (a) .^ 2, 2));
+    n2 = a(:,1) .* a(:,1) + a(:,2) .* a(:,2) + a(:,3) .* a(:,3);
     tol = 1e-6;
-    if (isa (a, "single"))
+    if (isa (args{k}, "single"))
       tol = 1e-5;
     endif
-    bad = abs (n - 1) > tol;
+    ## |n2 - 1| <= 2 tol covers |n - 1| <= tol; NaN and Inf fail it too
+    bad = ! (abs (n2 - 1) <= 2 * tol);
     if (any (bad))
+      if (! all (isfinite (a(:))))
+        error ("lafortune:badDirections",
+               "%s: %s must be finite, found NaN or Inf", fname, names{k});
+      endif
       i = find (bad, 1);
       error ("lafortune:notUnit",
              "%s: %s must hold unit vectors (|v| = 1 within %g), row %d has norm %g",
-             fname, names{k}, tol, i, n(i));
+             fname, names{k}, tol, i, sqrt (n2(i)));
     endif
     args{k} = double (a);
   endfor

@@ -12,24 +12,28 @@ function [th, td, pd] = merl_angles (wi, wo)
   hx = wi(:,1) + wo(:,1);
   hy = wi(:,2) + wo(:,2);
   hz = wi(:,3) + wo(:,3);
-  hn = sqrt (hx .^ 2 + hy .^ 2 + hz .^ 2);
-  hx ./= hn; hy ./= hn; hz ./= hn;
-  hz = min (max (hz, -1), 1);
+  rxy = hx .* hx + hy .* hy;
+  inv = 1 ./ sqrt (rxy + hz .* hz);
+  hz .*= inv;
+  hz(hz > 1) = 1;
   th = acos (hz);
-  sth = sqrt (hx .^ 2 + hy .^ 2);        # sin theta_h
-  r = sth;
-  r(r == 0) = 1;
-  cph = hx ./ r;                         # cos phi_h
-  sph = hy ./ r;                         # sin phi_h
-  cph(sth == 0) = 1;
-  ## rotate wi about z by -phi_h
+  sth = sqrt (rxy) .* inv;               # sin theta_h
+  r = 1 ./ sqrt (rxy);                   # cos/sin phi_h = hx/|hxy|, hy/|hxy|
+  cph = hx .* r;
+  sph = hy .* r;
+  flat = rxy == 0;                       # h along z: phi_h is arbitrary
+  if (any (flat))
+    cph(flat) = 1;
+    sph(flat) = 0;
+  endif
+  ## rotate wi about z by -phi_h, then about y by -theta_h
   x1 = wi(:,1) .* cph + wi(:,2) .* sph;
   y1 = wi(:,2) .* cph - wi(:,1) .* sph;
-  z1 = wi(:,3);
-  ## then about y by -theta_h
-  x2 = x1 .* hz - z1 .* sth;
-  z2 = x1 .* sth + z1 .* hz;
-  td = acos (min (max (z2, -1), 1));
+  x2 = x1 .* hz - wi(:,3) .* sth;
+  z2 = x1 .* sth + wi(:,3) .* hz;
+  z2(z2 > 1) = 1;
+  z2(z2 < -1) = -1;
+  td = acos (z2);
   pd = atan2 (y1, x2);
-  pd(pd < 0) += pi;
+  pd += pi * (pd < 0);
 endfunction
