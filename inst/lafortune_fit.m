@@ -230,28 +230,65 @@ function d = log_delta (y)
 endfunction
 
 ## --- one channel ----------------------------------------------------------
+## The objective is sum_i (w_i (ty_i - tf(f_i)))^2, tf = identity or log.
+## Samples with the same (sxy, sz) have the same model value, so they are
+## merged first (weights add, targets average): the minimiser is exactly the
+## same and every evaluation is cheaper (the in-plane table holds each pair
+## of angles twice, as (ti, to) and (-to, -ti)).
+function D = make_data (x, y, ty, w, wlin)
+  [xg, ~, j] = unique (x, "rows");
+  W = accumarray (j, w .^ 2);
+  Wl = accumarray (j, wlin .^ 2);
+  cnt = accumarray (j, 1);
+  D.x = xg;
+  D.w = sqrt (W);
+  D.ty = accumarray (j, w .^ 2 .* ty) ./ max (W, realmin);
+  D.wl = sqrt (Wl);
+  D.yl = accumarray (j, wlin .^ 2 .* y) ./ max (Wl, realmin);
+  D.cnt = cnt;
+  D.ybar = accumarray (j, y) ./ cnt;
+  D.n = numel (y);
+  D.ssw = sum ((y - D.ybar(j)) .^ 2);              # plain, within groups
+  D.wsw = sum ((w .* (ty - D.ty(j))) .^ 2);        # weighted, within groups
+endfunction
+
+function E = subset (D, k)
+  E = D;
+  for f = {"x", "w", "ty", "wl", "yl", "cnt", "ybar"}
+    E.(f{1}) = D.(f{1})(k,:);
+  endfor
+  ## a subset's own within-group terms are not needed: it only ranks starts
+  E.n = sum (E.cnt); E.ssw = 0; E.wsw = 0;
+endfunction
+
+function e = plain_rmse (D, f)
+  e = sqrt ((sum (D.cnt .* (D.ybar - f) .^ 2) + D.ssw) / D.n);
+endfunction
+
+function o = objective (D, f, islog, dl)
+  o = sqrt ((sum ((D.w .* (D.ty - tfun (f, islog, dl))) .^ 2) + D.wsw) / D.n);
+endfunction
+
 function ch = fit_channel (x, y, cosi, nlobes, opt)
-  ## the objective: residual wt .* (ty - tf (f)), tf = identity or log
-  d = log_delta (y);
+  dl = log_delta (y);
   switch (opt.weight)
-    case "plain"
+    case {"plain", "log"}
       w = ones (size (y));
     case "cosine"
       w = cosi;
     case "relative"
-      w = 1 ./ max (y, d);
-    case "log"
-      w = ones (size (y));
+      w = 1 ./ max (y, dl);
   endswitch
   islog = strcmp (opt.weight, "log");
   if (islog)
-    ty = log (max (y, 0) + d);
-    wlin = 1 ./ (max (y, 0) + d);     # first-order weights for amplitudes
+    ty = log (max (y, 0) + dl);
+    wlin = 1 ./ (max (y, 0) + dl);     # first-order weights for amplitudes
   else
     ty = y;
     wlin = w;
   endif
-  obj = @(f) sqrt (mean ((w .* (ty - tfun (f, islog, d))) .^ 2));
+  D = make_data (x, y, ty, w, wlin);
+  F = @(p) lafortune_core (p, D.x(:,1), D.x(:,2));
 
   ch = struct ("p", [], "ps", {{}}, "hist", [], "iter", 0, "cvg", true, "full_iter", 0);
   if (! isempty (opt.start) || strcmp (opt.init, "plain"))
@@ -261,36 +298,39 @@ function ch = fit_channel (x, y, cosi, nlobes, opt)
       p0 = [0.1; repmat([-1; 1; 0], nlobes, 1)];
       p0(4:3:end) = 10 * (1:nlobes);
     endif
-    [ch.p, ch.iter, ch.cvg] = run_lm (x, y, ty, w, p0, opt, islog, d);
+    [ch.p, ch.iter, ch.cvg] = run_lm (D, p0, opt, islog, dl);
+    ch.full_iter = ch.iter;
     ch.ps = cell (1, nlobes);
     ch.ps{nlobes} = ch.p;
     ch.hist = nan (1, nlobes);
-    ch.hist(nlobes) = sqrt (mean ((lafortune_core (ch.p, x(:,1), x(:,2)) - y) .^ 2));
+    ch.hist(nlobes) = plain_rmse (D, F (ch.p));
     return;
   endif
 
   ## 0 lobes: rho_d by weighted least squares
-  rho = pi * sum (wlin .^ 2 .* y) / max (sum (wlin .^ 2), realmin);
+  rho = pi * sum (D.wl .^ 2 .* D.yl) / max (sum (D.wl .^ 2), realmin);
   p = max (rho, 0);
-  cur_obj = obj (lafortune_core (p, x(:,1), x(:,2)));
-  fit_trace ("add", cur_obj, sqrt (mean ((p / pi - y) .^ 2)));
+  cur_obj = objective (D, F (p), islog, dl);
+  fit_trace ("add", cur_obj, plain_rmse (D, F (p)));
   dirs = [-1 1; 1 1; -1 0.7; -1 1.3; 0 1];
   ## candidate starts are screened on an evenly spaced subset
-  sub = (1:max (1, floor (rows (x) / opt.screen_samples)):rows (x))';
-  min_support = min (max (8, 0.002 * rows (x)), rows (x));
+  m = rows (D.x);
+  sub = (1:max (1, floor (m / opt.screen_samples)):m)';
+  Ds = subset (D, sub);
+  min_support = min (max (8, 0.002 * m), m);
   expo = [1 3 10 30 100 300 1e3 3e3 1e4 3e4 1e5];
   for k = 1:nlobes
-    fcur = lafortune_core (p, x(:,1), x(:,2));
-    r = y - fcur;
+    fcur = F (p);
+    r = D.yl - fcur;
     cand = zeros (0, 5);     # [obj, cxy, cz, e, family]
     for i = 1:rows (dirs)
       for e = expo
-        g = lafortune_core ([0; dirs(i,:)'; e], x(:,1), x(:,2));
-        gg = sum ((wlin .* g) .^ 2);
+        g = lafortune_core ([0; dirs(i,:)'; e], D.x(:,1), D.x(:,2));
+        gg = sum ((D.wl .* g) .^ 2);
         if (gg <= 0)
           continue;
         endif
-        s = max (sum (wlin .^ 2 .* g .* r) / gg, 0);
+        s = max (sum (D.wl .^ 2 .* g .* r) / gg, 0);
         if (s <= 0)
           continue;
         endif
@@ -302,16 +342,16 @@ function ch = fit_channel (x, y, cosi, nlobes, opt)
         if (nnz (g > 1e-3 * max (g)) < min_support)
           continue;
         endif
-        cand(end+1,:) = [obj(fcur + s * g), a * dirs(i,:), e, i];
+        cand(end+1,:) = [objective(D, fcur + s * g, islog, dl), a * dirs(i,:), e, i];
       endfor
     endfor
     best_p = [p; 0; 0; 1];   # a zero lobe: the k-1 lobe error exactly
     best_obj = cur_obj;
     best_iter = 0; best_cvg = true;
     if (! isempty (cand) && cur_obj > 0)
-      ## screen the most promising starts with a few iterations, then polish
-      ## the best one to convergence
-      ## the best start of each direction family, best families first
+      ## the best start of each direction family, best families first; each
+      ## of the first TRIES gets a few iterations on the subset, the best
+      ## then converges on the subset and last on all samples
       [~, order] = sort (cand(:,1));
       [~, first] = unique (cand(order,5), "first");
       order = order(sort (first));
@@ -319,25 +359,27 @@ function ch = fit_channel (x, y, cosi, nlobes, opt)
       screen.max_iter = min (opt.screen_iter, opt.max_iter);
       it_sum = 0;
       sobj = Inf;
-      for j = order(1:min (opt.tries, end))'
+      ntry = min (opt.tries, numel (order));
+      if (ntry == 1)
+        ps = [p; cand(order(1),2:4)'];
+      endif
+      for j = order(1:ntry * (ntry > 1))'
         p0 = [p; cand(j,2:4)'];
-        [pj, it] = run_lm (x(sub,:), y(sub), ty(sub), w(sub), p0, screen, islog, d);
+        [pj, it] = run_lm (Ds, p0, screen, islog, dl);
         it_sum += it;
-        oj = sqrt (mean ((w(sub) .* (ty(sub) - tfun (lafortune_core (pj, x(sub,1), x(sub,2)), islog, d))) .^ 2));
+        oj = objective (Ds, lafortune_core (pj, Ds.x(:,1), Ds.x(:,2)), islog, dl);
         if (oj < sobj)
           sobj = oj; ps = pj;
         endif
       endfor
-      if (numel (sub) < rows (x))
-        ## converge on the subset first: the full-data polish then needs
-        ## only a few (expensive) iterations
-        [ps, it] = run_lm (x(sub,:), y(sub), ty(sub), w(sub), ps, opt, islog, d);
+      if (numel (sub) < m)
+        [ps, it] = run_lm (Ds, ps, opt, islog, dl);
         it_sum += it;
       endif
-      [pj, it, cv] = run_lm (x, y, ty, w, ps, opt, islog, d);
+      [pj, it, cv] = run_lm (D, ps, opt, islog, dl);
       it_sum += it;
       ch.full_iter += it;
-      oj = obj (lafortune_core (pj, x(:,1), x(:,2)));
+      oj = objective (D, F (pj), islog, dl);
       if (oj < best_obj)
         best_obj = oj; best_p = pj; best_cvg = cv;
       endif
@@ -348,7 +390,7 @@ function ch = fit_channel (x, y, cosi, nlobes, opt)
     ch.iter += best_iter;
     ch.cvg = best_cvg;
     ch.ps{k} = p;
-    ch.hist(k) = sqrt (mean ((lafortune_core (p, x(:,1), x(:,2)) - y) .^ 2));
+    ch.hist(k) = plain_rmse (D, F (p));
   endfor
   ch.p = p;
 endfunction
@@ -366,9 +408,9 @@ function p0 = start_params (m, c)
 endfunction
 
 ## Levenberg-Marquardt on one channel through leasqr
-function [p, iter, cvg] = run_lm (x, y, ty, w, p0, opt, islog, d)
+function [p, iter, cvg] = run_lm (D, p0, opt, islog, dl)
   np = numel (p0);
-  F = @(xx, pp) model_fun (xx, pp, islog, d, ty, w, y);
+  F = @(xx, pp) model_fun (D, pp, islog, dl);
   lb = -Inf (np, 1); ub = Inf (np, 1);
   lb(1) = 0;
   lb(4:3:end) = 0; ub(4:3:end) = 1e7;
@@ -379,7 +421,7 @@ function [p, iter, cvg] = run_lm (x, y, ty, w, p0, opt, islog, d)
   endif
   dp = 1e-3 * ones (np, 1);
   if (strcmp (opt.jacobian, "analytic"))
-    dFdp = @(xx, f, pp, dpp, FF, varargin) model_jac (xx, pp, islog, d);
+    dFdp = @(xx, f, pp, dpp, FF, varargin) model_jac (D, pp, islog, dl);
   else
     dFdp = "dfdp";
   endif
@@ -390,7 +432,7 @@ function [p, iter, cvg] = run_lm (x, y, ty, w, p0, opt, islog, d)
   old = verbose;
   verbose = false;
   unwind_protect
-    [~, p, cvg, iter] = quiet_leasqr (x, ty, p0, F, opt.tol, opt.max_iter, w, dp, dFdp, options);
+    [~, p, cvg, iter] = quiet_leasqr (D.x, D.ty, p0, F, opt.tol, opt.max_iter, D.w, dp, dFdp, options);
   unwind_protect_cleanup
     if (had)
       verbose = old;
@@ -414,22 +456,21 @@ function varargout = quiet_leasqr (varargin)
   [out, varargout{1:4}] = evalc ("leasqr (args{:})");
 endfunction
 
-function f = model_fun (x, p, islog, d, ty, w, y)
-  f = lafortune_core (p, x(:,1), x(:,2));
-  ferr = sqrt (mean ((f - y) .^ 2));
+function f = model_fun (D, p, islog, dl)
+  f = lafortune_core (p, D.x(:,1), D.x(:,2));
+  ferr = plain_rmse (D, f);
   if (islog)
-    f = log (max (f, 0) + d);
+    f = log (max (f, 0) + dl);
   endif
-  fit_trace ("add", sqrt (mean ((w .* (ty - f)) .^ 2)), ferr);
+  fit_trace ("add", sqrt ((sum ((D.w .* (D.ty - f)) .^ 2) + D.wsw) / D.n), ferr);
 endfunction
 
-function J = model_jac (x, p, islog, d)
-  [f, J] = lafortune_core (p, x(:,1), x(:,2));
+function J = model_jac (D, p, islog, dl)
+  [f, J] = lafortune_core (p, D.x(:,1), D.x(:,2));
   if (islog)
-    J ./= (max (f, 0) + d);
+    J ./= (max (f, 0) + dl);
   endif
 endfunction
-
 %!demo
 %! ## the paper's flow on a synthetic material: in-plane table, 1/2/3 lobes
 %! truth = struct ("rho_d", [0.05 0.1 0.02], "Cxy", [-1 -1 -1; -0.7 -0.7 -0.7], ...
