@@ -56,16 +56,61 @@ install: deps dist
 	$(OCT) --eval 'warning ("off", "Octave:shadowed-function"); pkg install $(TARBALL)'
 
 check: deps dist
-	$(OCT) scripts/run_tests.m $(abspath $(TARBALL))
+	@$(MAKE) --no-print-directory -C src
+	LAFORTUNE_TOP=$(CURDIR) $(OCT) scripts/run_tests.m $(abspath $(TARBALL))
 
 bench: deps
 	$(MAKE) -C src
 	@for b in scripts/bench_*.m; do echo "== $$b"; $(OCT) --path src $$b || exit 1; echo; done
 
+# ---- make reproduce: incremental steps; each writes its outputs atomically ----
+ifeq ($(QUICK),1)
+RESULTS ?= results/quick
+else
+RESULTS ?= results
+endif
+MESH ?=
+export RESULTS MERL_DIR QUICK MESH
+MATS := green-metallic-paint red-plastic
+R := $(RESULTS)
+# a change to the toolbox's code makes every step out of date
+CODE := $(wildcard inst/*.m inst/private/*.m src/*.cc) scripts/repro_config.m scripts/repro_scene.m
+octrun = $(OCT) --path $(CURDIR)/inst --path $(CURDIR)/src --path $(CURDIR)/scripts \
+  --eval 'warning ("off", "Octave:shadowed-function"); pkg load optim; $(1)'
+OUTPUTS := $(R)/report.md $(R)/summary.json
+
 reproduce: deps
-	$(MAKE) -C src
-	@$(OCT) --path src --eval 'addpath ("inst"); addpath ("scripts"); reproduce ("$(MERL_DIR)", $(QUICK))' \
-	  || { echo "reproduce: failed"; exit 1; }
+	@$(MAKE) --no-print-directory -C src
+	@$(MAKE) --no-print-directory -s $(OUTPUTS)
+	@echo "reproduce: done: $(R)/report.md, $(R)/summary.json, figures in $(R)/figures"
+
+.PHONY: FORCE
+FORCE:
+
+$(R)/data/%.binary: FORCE
+	@$(call octrun,repro_data ("$*"))
+
+$(R)/fit/%.json: $(R)/data/%.binary scripts/repro_fit.m $(CODE)
+	@$(call octrun,repro_fit ("$*"))
+
+$(R)/render/%-measured.json: $(R)/data/%.binary scripts/repro_render_measured.m $(CODE)
+	@$(call octrun,repro_render_measured ("$*"))
+
+$(R)/render/%-fits.json: $(R)/fit/%.json $(R)/render/%-measured.json scripts/repro_render_fits.m $(CODE)
+	@$(call octrun,repro_render_fits ("$*"))
+
+$(R)/spp/%.json: $(R)/render/%-measured.json scripts/repro_spp.m $(CODE)
+	@$(call octrun,repro_spp ("$*"))
+
+STEP_OUT := $(foreach m,$(MATS),$(R)/fit/$(m).json $(R)/render/$(m)-fits.json $(R)/spp/$(m).json)
+
+$(R)/figures/spp.png: $(STEP_OUT) scripts/repro_figures.m $(CODE)
+	@$(call octrun,repro_figures ())
+
+$(OUTPUTS) &: $(R)/figures/spp.png $(STEP_OUT) scripts/repro_report.m $(CODE)
+	@$(call octrun,repro_report ())
+
+.SECONDARY:
 
 clean:
 	rm -rf build $(TARBALL) $(TARBALL).tmp

@@ -70,58 +70,7 @@ function stops = img_write_png (file, img, exposure = 0)
     error ("lafortune:badFile",
            "img_write_png: FILE must be a non-empty character string");
   endif
-  if (! (isa (img, "double") || isa (img, "single")) || ! isreal (img)
-      || ndims (img) != 3 || size (img, 3) != 3 || isempty (img))
-    if (isnumeric (img) || islogical (img))
-      cplx = "";
-      if (! isreal (img))
-        cplx = "complex ";
-      endif
-      desc = sprintf ("%s %s%s", strjoin (arrayfun (@num2str, size (img),
-                                                    "uniformoutput", false),
-                                          "x"),
-                      cplx, class (img));
-    else
-      desc = class (img);
-    endif
-    error ("lafortune:badImage",
-           "img_write_png: IMG must be a real double or single H x W x 3 array, got %s",
-           desc);
-  endif
-  img = double (img);
-
-  if (ischar (exposure))
-    if (! strcmpi (exposure, "auto"))
-      error ("lafortune:badExposure",
-             "img_write_png: EXPOSURE must be a finite real scalar (stops) or \"auto\", got \"%s\"",
-             exposure);
-    endif
-    Y = 0.2126 * img(:,:,1) + 0.7152 * img(:,:,2) + 0.0722 * img(:,:,3);
-    Y = sort (Y(isfinite (Y)));
-    if (isempty (Y))
-      exposure = 0;
-    else
-      p99 = Y(ceil (0.99 * numel (Y)));
-      if (p99 > 0)
-        exposure = -log2 (p99);
-      else
-        exposure = 0;
-      endif
-    endif
-  elseif (! (isnumeric (exposure) && isreal (exposure) && isscalar (exposure)
-             && isfinite (exposure)))
-    error ("lafortune:badExposure",
-           "img_write_png: EXPOSURE must be a finite real scalar (stops) or \"auto\"");
-  endif
-  exposure = double (exposure);
-
-  c = img * 2^exposure;
-  c(isnan (c)) = 0;
-  c = min (max (c, 0), 1);
-  lo = c <= 0.0031308;
-  c(lo) = 12.92 * c(lo);
-  c(! lo) = 1.055 * c(! lo) .^ (1 / 2.4) - 0.055;
-  rgb = uint8 (round (255 * c));
+  [rgb, exposure] = tonemap (img, exposure, "img_write_png");
 
   ## Temporary name in the target folder; keep ".png" at the end.
   [~, tag] = fileparts (tempname ());

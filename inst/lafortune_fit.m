@@ -22,7 +22,12 @@
 ## 1 to 1e5) by the best linear least-squares amplitude (a candidate that is
 ## non-negligible on fewer than 0.2% of the samples is skipped); the best
 ## start of each of the @code{"tries"} most promising direction families is
-## refined by Levenberg-Marquardt and the best result kept.  As a start that adds a zero lobe reproduces the k-lobe error, the
+## refined by Levenberg-Marquardt and the best result kept.  A result that
+## exceeds 10 times the data's maximum anywhere in the data's angular range
+## (checked on a 0.5-degree in-plane grid, where every lobe's base reaches its
+## extremes) is rejected: such a lobe fits a few samples and explodes between
+## them or toward grazing angles; the next start is tried instead
+## (@code{info.rejected} counts them).  As a start that adds a zero lobe reproduces the k-lobe error, the
 ## error never increases with more lobes.
 ##
 ## Options:
@@ -66,7 +71,8 @@
 ## @code{trace}, a 1 x 3 cell of K x 2 arrays [elapsed seconds, rmse]: the
 ## error of the best parameters found so far against run time, over all
 ## lobe counts of the growing fit.  @code{info.history} is nlobes x 3: rmse
-## after each lobe count.  @var{models} is a cell with the fitted models for
+## after each lobe count, and @code{info.lobe_time} (nlobes x 3) the seconds
+## from the channel's start until that lobe count was done (growing mode).  @var{models} is a cell with the fitted models for
 ## 1 .. @var{nlobes} lobes (growing mode).
 ##
 ## A channel that did not converge within @code{max_iter} raises the
@@ -132,6 +138,7 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
 
   x = [S.wi(:,1) .* S.wo(:,1) + S.wi(:,2) .* S.wo(:,2), S.wi(:,3) .* S.wo(:,3)];
   cosi = S.wi(:,3);
+  opt.guard = guard_set (S);
   z = zeros (nlobes, 3);
   model = struct ("rho_d", [0 0 0], "Cxy", z, "Cz", z, "e", z);
   models = cell (1, nlobes);
@@ -142,8 +149,9 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
   nan3 = nan (1, 3);
   info = struct ("nlobes", nlobes, "weight", opt.weight, "n", rows (x),
                  "rmse", nan3, "rel_rmse", nan3, "log_rmse", nan3, "cos_rmse", nan3,
-                 "iterations", zeros (1, 3), "full_iterations", zeros (1, 3), "converged", true (1, 3), "time", zeros (1, 3),
-                 "trace", {cell(1, 3)}, "history", nan (nlobes, 3));
+                 "iterations", zeros (1, 3), "full_iterations", zeros (1, 3), "rejected", zeros (1, 3), "converged", true (1, 3), "time", zeros (1, 3),
+                 "trace", {cell(1, 3)}, "history", nan (nlobes, 3),
+                 "lobe_time", nan (nlobes, 3));
   for c = opt.channels(:)'
     y = S.rgb(:,c);
     t0 = tic ();
@@ -169,8 +177,10 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
     info.log_rmse(c) = e.log_rmse; info.cos_rmse(c) = e.cos_rmse;
     info.iterations(c) = ch.iter;
     info.full_iterations(c) = ch.full_iter;
+    info.rejected(c) = ch.rejected;
     info.converged(c) = ch.cvg;
     info.history(1:numel (ch.hist),c) = ch.hist(:);
+    info.lobe_time(1:numel (ch.ktime),c) = ch.ktime(:);
     T = fit_trace ("get");
     if (isempty (T))
       info.trace{c} = [info.time(c), e.rmse];
@@ -206,6 +216,23 @@ function S = check_samples (S)
     error ("lafortune:badSamples", "lafortune_fit: S needs at least 4 samples, got %d", rows (S.wi));
   endif
   S.rgb = double (S.rgb);
+endfunction
+
+## Direction pairs that span the data's angular range: the in-plane pairs,
+## which reach the extremes of every lobe's base (ux vx + uy vy is largest in
+## size in the plane).  A fitted model may not exceed GUARD_FACTOR times the
+## data's maximum on them: a lobe that fits a few samples and explodes
+## between them (or toward grazing angles) is rejected.
+function G = guard_set (S)
+  amax = acosd (max (min ([S.wi(:,3); S.wo(:,3)]), 0));
+  t = linspace (0, amax, max (2, ceil (amax / 0.5) + 1));
+  [TI, TO] = ndgrid (t, [-fliplr(t(2:end)), t]);
+  G = [sind(TI(:)) .* sind(TO(:)), cosd(TI(:)) .* cosd(TO(:))];
+endfunction
+
+function ok = guard_ok (p, G, ymax)
+  g = lafortune_core (p, G(:,1), G(:,2));
+  ok = all (isfinite (g)) && max (g) <= 10 * max (ymax, realmin);
 endfunction
 
 function e = error_stats (f, y, cosi)
@@ -290,7 +317,8 @@ function ch = fit_channel (x, y, cosi, nlobes, opt)
   D = make_data (x, y, ty, w, wlin);
   F = @(p) lafortune_core (p, D.x(:,1), D.x(:,2));
 
-  ch = struct ("p", [], "ps", {{}}, "hist", [], "iter", 0, "cvg", true, "full_iter", 0);
+  ch = struct ("p", [], "ps", {{}}, "hist", [], "iter", 0, "cvg", true, "full_iter", 0,
+               "rejected", 0);
   if (! isempty (opt.start) || strcmp (opt.init, "plain"))
     if (! isempty (opt.start))
       p0 = start_params (opt.start, opt.channel);
@@ -304,9 +332,12 @@ function ch = fit_channel (x, y, cosi, nlobes, opt)
     ch.ps{nlobes} = ch.p;
     ch.hist = nan (1, nlobes);
     ch.hist(nlobes) = plain_rmse (D, F (ch.p));
+    ch.ktime = nan (1, nlobes);
     return;
   endif
 
+  t0 = tic ();
+  ch.ktime = nan (1, nlobes);
   ## 0 lobes: rho_d by weighted least squares
   rho = pi * sum (D.wl .^ 2 .* D.yl) / max (sum (D.wl .^ 2), realmin);
   p = max (rho, 0);
@@ -363,26 +394,40 @@ function ch = fit_channel (x, y, cosi, nlobes, opt)
       if (ntry == 1)
         ps = [p; cand(order(1),2:4)'];
       endif
+      starts = zeros (numel (p) + 3, 0);
+      sobj = [];
       for j = order(1:ntry * (ntry > 1))'
         p0 = [p; cand(j,2:4)'];
         [pj, it] = run_lm (Ds, p0, screen, islog, dl);
         it_sum += it;
-        oj = objective (Ds, lafortune_core (pj, Ds.x(:,1), Ds.x(:,2)), islog, dl);
-        if (oj < sobj)
-          sobj = oj; ps = pj;
-        endif
+        starts(:,end+1) = pj;
+        sobj(end+1) = objective (Ds, lafortune_core (pj, Ds.x(:,1), Ds.x(:,2)), islog, dl);
       endfor
-      if (numel (sub) < m)
-        [ps, it] = run_lm (Ds, ps, opt, islog, dl);
+      if (ntry == 1)
+        starts = ps;
+        sobj = 0;
+      endif
+      ## the best screened start first; a result that explodes between the
+      ## samples is rejected and the next start tried
+      [~, so] = sort (sobj);
+      for ps = starts(:,so)
+        if (numel (sub) < m)
+          [ps, it] = run_lm (Ds, ps, opt, islog, dl);
+          it_sum += it;
+        endif
+        [pj, it, cv] = run_lm (D, ps, opt, islog, dl);
         it_sum += it;
-      endif
-      [pj, it, cv] = run_lm (D, ps, opt, islog, dl);
-      it_sum += it;
-      ch.full_iter += it;
-      oj = objective (D, F (pj), islog, dl);
-      if (oj < best_obj)
-        best_obj = oj; best_p = pj; best_cvg = cv;
-      endif
+        ch.full_iter += it;
+        oj = objective (D, F (pj), islog, dl);
+        if (! guard_ok (pj, opt.guard, max (abs (y))))
+          ch.rejected += 1;
+          continue;
+        endif
+        if (oj < best_obj)
+          best_obj = oj; best_p = pj; best_cvg = cv;
+        endif
+        break;
+      endfor
       best_iter = it_sum;
     endif
     p = best_p;
@@ -391,6 +436,7 @@ function ch = fit_channel (x, y, cosi, nlobes, opt)
     ch.cvg = best_cvg;
     ch.ps{k} = p;
     ch.hist(k) = plain_rmse (D, F (p));
+    ch.ktime(k) = toc (t0);
   endfor
   ch.p = p;
 endfunction

@@ -13,6 +13,10 @@
 ## "N passed, M failed"; exits 1 on any failure.
 
 1;
+function s = ifelse_str (c, a, b)
+  if (c) s = a; else s = b; endif
+endfunction
+
 warning ("off", "Octave:shadowed-function");
 here = fileparts (mfilename ("fullpath"));
 top = fullfile (here, "..");
@@ -32,7 +36,7 @@ else
   pkg ("local_list", fullfile (scratch, "octave_packages"));
   printf ("run_tests: installing %s into a scratch prefix\n", tarball);
   fflush (stdout);
-  pkg ("install", "-nodeps", tarball);
+  pkg ("install", "-local", "-nodeps", tarball);
   pkg ("load", "lafortune");
   warning ("off", "Octave:shadowed-function");
   pkg ("load", "optim");
@@ -100,6 +104,3 @@ else
 endif
 exit (failed > 0);
 
-function s = ifelse_str (c, a, b)
-  if (c) s = a; else s = b; endif
-endfunction

@@ -1,0 +1,218 @@
+## Copyright (C) 2026 The lafortune developers
+## SPDX-License-Identifier: GPL-3.0-or-later
+
+## -*- texinfo -*-
+## @deftypefn {} {} repro_report ()
+## Last step of `make reproduce`: RESULTS/report.md (our numbers beside the
+## paper's, fit errors and times, error against run time for fitting and
+## rendering) and RESULTS/summary.json (the same numbers for machines).
+## @end deftypefn
+function repro_report ()
+  c = repro_config ();
+  known = struct ("h90d2ee46", "the real MERL measurement",
+                  "hd6407989", "the real MERL measurement",
+                  "h7cb7830f", "a neural-network reconstruction of the MERL measurement (Neural-BRDF stand-in, not the measurement)",
+                  "h54d51a41", "a neural-network reconstruction of the MERL measurement (Neural-BRDF stand-in, not the measurement)");
+  L = {};
+  L{end+1} = "# lafortune: Lafortune-model fits of measured BRDFs, reproduced";
+  L{end+1} = "";
+  sm = struct ();
+  sm.data = struct ();
+  for i = 1:numel (c.materials)
+    mat = c.materials{i};
+    src = jsondecode (fileread (fullfile (c.results, "data", [mat ".source.json"])));
+    if (strcmp (src.kind, "merl-file"))
+      tag = ["h" src.sha256(1:min (8, end))];
+      what = "a MERL-format file of unknown origin";
+      if (isfield (known, tag))
+        what = known.(tag);
+      endif
+      line = sprintf ("- **%s**: `%s` (sha256 %s…): %s.", mat, src.path, src.sha256(1:min (12, end)), what);
+    else
+      what = "the toolbox's built-in stand-in (a Cook–Torrance model with the parameters Ngan et al. 2005 published for this material, in MERL format with 3% noise and missing grazing samples), not the measurement";
+      line = sprintf ("- **%s**: no MERL file found in `%s`: %s.", mat, c.merl_dir, what);
+    endif
+    L{end+1} = line;
+    sm.data.(fieldname (mat)) = struct ("kind", src.kind, "path", src.path, "sha256", src.sha256, "what", what);
+  endfor
+  scene = repro_scene (c);
+  L{end+1} = "";
+  L{end+1} = sprintf (["Data used (above). Settings: scene `%s` (%s), %d x %d pixels (W x H), %d samples per " ...
+                       "pixel for the measured data (rt_render, jittered); fits rendered with POV-Ray " ...
+                       "(anti-aliasing %d x %d on edges) and, as a control, with rt_render on the same samples; " ...
+                       "grazing angles beyond %d degrees left out of the fits; %s run; %s, Octave %s, %d cores."],
+                      scene.name, scene_desc (c), scene.width, scene.height, scene.spp, c.pov_aa, c.pov_aa,
+                      c.max_angle, ifelse (c.quick, "QUICK (classroom)", "full"),
+                      datestr (now (), "yyyy-mm-dd HH:MM"), OCTAVE_VERSION, nproc ());
+  L{end+1} = "";
+  L{end+1} = "PSNR convention: 10 log10 (peak^2 / MSE), peak = the measured render's maximum, MSE over all pixels and channels of the linear HDR images.";
+  L{end+1} = "";
+  ## --- PSNR table
+  L{end+1} = "## PSNR of each fit's render against the measured-data render";
+  L{end+1} = "";
+  L{end+1} = "The paper rendered the Happy Buddha with pbrt; our scene differs (see settings), so compare trends, not decibels.";
+  L{end+1} = "";
+  L{end+1} = "| material | lobes | paper | in-plane fit, POV-Ray | in-plane fit, rt_render | hemisphere fit, POV-Ray | rt_render vs POV-Ray (same model) |";
+  L{end+1} = "|---|---|---|---|---|---|---|";
+  sm.materials = struct ();
+  for i = 1:numel (c.materials)
+    mat = c.materials{i};
+    R = jsondecode (fileread (fullfile (c.results, "render", [mat "-fits.json"])));
+    F = jsondecode (fileread (fullfile (c.results, "fit", [mat ".json"])));
+    P = jsondecode (fileread (fullfile (c.results, "spp", [mat ".json"])));
+    M = jsondecode (fileread (fullfile (c.results, "render", [mat "-measured.json"])));
+    paper = c.paper_psnr.(fieldname (mat));
+    for k = c.lobes
+      L{end+1} = sprintf ("| %s | %d | %.2f dB | %.2f dB | %.2f dB | %.2f dB | %.1f dB |", mat, k, paper(k),
+                          R.inplane(k).psnr_pov, R.inplane(k).psnr_rt, R.hemisphere(k).psnr_pov,
+                          R.inplane(k).renderers_psnr);
+    endfor
+    s = struct ();
+    s.paper_psnr = paper;
+    s.psnr_inplane_pov = [R.inplane.psnr_pov];
+    s.psnr_inplane_rt = [R.inplane.psnr_rt];
+    s.psnr_hemisphere_pov = [R.hemisphere.psnr_pov];
+    s.renderers_psnr = [R.inplane.renderers_psnr];
+    s.fit_rmse_inplane = mean (F.inplane.errors.inplane.rmse, 2)';
+    s.fit_rel_rmse_inplane = mean (F.inplane.errors.inplane.rel_rmse, 2)';
+    s.fit_rmse_hemisphere = mean (F.hemisphere.errors.hemisphere.rmse, 2)';
+    s.fit_time_inplane = max (F.inplane.lobe_time, [], 2)';
+    s.fit_time_hemisphere = max (F.hemisphere.lobe_time, [], 2)';
+    s.render_time_measured = M.info.time_total;
+    s.render_time_pov = [R.inplane.pov_time];
+    s.render_time_rt = [R.inplane.rt_time];
+    s.spp = P.spp(:)';
+    s.spp_time = P.time(:)';
+    s.spp_psnr = P.psnr(:)';
+    sm.materials.(fieldname (mat)) = s;
+    D.(fieldname (mat)) = struct ("F", F, "R", R, "P", P, "M", M);
+  endfor
+  L{end+1} = "";
+  L{end+1} = "![measured and fitted renders, green metallic paint](figures/renders-green-metallic-paint.png)";
+  L{end+1} = "![measured and fitted renders, red plastic](figures/renders-red-plastic.png)";
+  L{end+1} = "";
+  L{end+1} = "Each fit's render has its difference image (|fit - measured| averaged over channels, white = 10% of the peak) in the corner.";
+  L{end+1} = "";
+  ## --- fits
+  L{end+1} = "## Fits";
+  L{end+1} = "";
+  L{end+1} = "Errors are means over R, G, B of per-channel errors; `in-plane` is the paper's table (plane of incidence), `hemisphere` every valid MERL bin (subsampled). Fit time is cumulative: the k-lobe fit grows from the (k-1)-lobe one.";
+  L{end+1} = "";
+  L{end+1} = "| material | fit | lobes | rmse (in-plane table) | relative rmse | log rmse | cosine-weighted rmse | rmse (hemisphere table) | fit time (s) |";
+  L{end+1} = "|---|---|---|---|---|---|---|---|---|";
+  for i = 1:numel (c.materials)
+    mat = c.materials{i};
+    F = D.(fieldname (mat)).F;
+    for mth = {"inplane", "hemisphere"}
+      r = F.(mth{1});
+      for k = c.lobes
+        L{end+1} = sprintf ("| %s | %s | %d | %.4g | %.4g | %.4g | %.4g | %.4g | %.2f |", mat, mth{1}, k,
+                            mean (r.errors.inplane.rmse(k,:)), mean (r.errors.inplane.rel_rmse(k,:)),
+                            mean (r.errors.inplane.log_rmse(k,:)), mean (r.errors.inplane.cos_rmse(k,:)),
+                            mean (r.errors.hemisphere.rmse(k,:)), max (r.lobe_time(k,:)));
+      endfor
+    endfor
+  endfor
+  L{end+1} = "";
+  L{end+1} = "![in-plane data and fits, green metallic paint](figures/plane-green-metallic-paint.png)";
+  L{end+1} = "![in-plane data and fits, red plastic](figures/plane-red-plastic.png)";
+  L{end+1} = "";
+  L{end+1} = "Parameters of the in-plane fits (the paper's layout; JSON, text and BRDF Explorer files in `fit/`):";
+  L{end+1} = "";
+  for i = 1:numel (c.materials)
+    mat = c.materials{i};
+    for k = c.lobes
+      L{end+1} = "```";
+      L{end+1} = strtrim (fileread (fullfile (c.results, "fit", sprintf ("%s-inplane-%d.txt", mat, k))));
+      L{end+1} = "```";
+    endfor
+  endfor
+  L{end+1} = "";
+  ## --- error against run time
+  L{end+1} = "## Error against run time";
+  L{end+1} = "";
+  L{end+1} = "### Fitting";
+  L{end+1} = "";
+  L{end+1} = "Time until the fit's error (rmse of the best parameters so far, growing from 1 to 3 lobes) came within 10% and within 1% of its final value, per channel.";
+  L{end+1} = "";
+  L{end+1} = "| material | channel | final rmse | time to +10% (s) | time to +1% (s) | total (s) |";
+  L{end+1} = "|---|---|---|---|---|---|";
+  chn = {"R", "G", "B"};
+  for i = 1:numel (c.materials)
+    mat = c.materials{i};
+    F = D.(fieldname (mat)).F;
+    for ch = 1:3
+      T = trace_of (F.inplane.trace, ch);
+      fin = T(end,2);
+      t10 = T(find (T(:,2) <= 1.1 * fin, 1), 1);
+      t1 = T(find (T(:,2) <= 1.01 * fin, 1), 1);
+      L{end+1} = sprintf ("| %s | %s | %.4g | %.3f | %.3f | %.3f |", mat, chn{ch}, fin, t10, t1, T(end,1));
+    endfor
+  endfor
+  L{end+1} = "";
+  L{end+1} = "![fit error against run time](figures/fit-trace.png)";
+  L{end+1} = "";
+  L{end+1} = "### Rendering";
+  L{end+1} = "";
+  L{end+1} = sprintf ("The measured data rendered by rt_render with fewer samples per pixel, against the %d-spp render.", c.spp);
+  L{end+1} = "";
+  L{end+1} = "| material | spp | render time (s) | PSNR (dB) |";
+  L{end+1} = "|---|---|---|---|";
+  for i = 1:numel (c.materials)
+    mat = c.materials{i};
+    P = D.(fieldname (mat)).P;
+    for j = 1:numel (P.spp)
+      L{end+1} = sprintf ("| %s | %d | %.2f | %.2f |", mat, P.spp(j), P.time(j), P.psnr(j));
+    endfor
+    L{end+1} = sprintf ("| %s | %d (reference) | %.2f | - |", mat, P.reference_spp, P.reference_time);
+  endfor
+  L{end+1} = "";
+  L{end+1} = "![render PSNR against run time](figures/spp.png)";
+  L{end+1} = "";
+  L{end+1} = "### Render times";
+  L{end+1} = "";
+  L{end+1} = sprintf ("The paper: about 345 s per 256 x 512 image at 128 rays per pixel (pbrt, 2.3 GHz dual-core laptop). Here (%d x %d):", scene.width, scene.height);
+  L{end+1} = "";
+  L{end+1} = "| material | measured, rt_render (s) | material memory (bytes) | 1/2/3-lobe fits, POV-Ray (s) | 1/2/3-lobe fits, rt_render (s) |";
+  L{end+1} = "|---|---|---|---|---|";
+  for i = 1:numel (c.materials)
+    mat = c.materials{i};
+    X = D.(fieldname (mat));
+    L{end+1} = sprintf ("| %s | %.1f | %d | %s | %s |", mat, X.M.info.time_total, X.M.info.material_bytes,
+                        strjoin (arrayfun (@(v) sprintf ("%.1f", v), [X.R.inplane.pov_time], "uniformoutput", false), " / "),
+                        strjoin (arrayfun (@(v) sprintf ("%.1f", v), [X.R.inplane.rt_time], "uniformoutput", false), " / "));
+  endfor
+  L{end+1} = "";
+  txt = strjoin (L, "\n");
+  repro_save (fullfile (c.results, "report.md"), [txt "\n"]);
+  sm.settings = struct ("scene", scene.name, "width", scene.width, "height", scene.height,
+                        "spp", scene.spp, "pov_antialias", c.pov_aa, "max_angle", c.max_angle,
+                        "quick", c.quick);
+  repro_save (fullfile (c.results, "summary.json"), sm);
+  printf ("reproduce: wrote %s and %s\n", fullfile (c.results, "report.md"),
+          fullfile (c.results, "summary.json"));
+endfunction
+
+function f = fieldname (mat)
+  f = strrep (mat, "-", "_");
+endfunction
+
+function s = ifelse (c, a, b)
+  if (c) s = a; else s = b; endif
+endfunction
+
+function s = scene_desc (c)
+  if (isempty (c.mesh))
+    s = "the built-in torus mesh; give MESH=happy_vrip.ply for the paper's Happy Buddha";
+  else
+    s = c.mesh;
+  endif
+endfunction
+
+function T = trace_of (tr, ch)
+  if (iscell (tr))
+    T = tr{ch};
+  else
+    T = squeeze (tr(ch,:,:));
+  endif
+endfunction

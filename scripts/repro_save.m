@@ -1,0 +1,33 @@
+## Copyright (C) 2026 The lafortune developers
+## SPDX-License-Identifier: GPL-3.0-or-later
+
+## -*- texinfo -*-
+## @deftypefn {} {} repro_save (@var{file}, @var{value})
+## Write @var{value} as JSON (a struct) or as text (a char) to @var{file}
+## through a temporary file and a rename, so that an interrupted step leaves
+## no half file for Make to take as done.
+## @end deftypefn
+function repro_save (file, value)
+  d = fileparts (file);
+  if (! isempty (d) && ! isfolder (d))
+    mkdir (d);
+  endif
+  if (ischar (value))
+    txt = value;
+  else
+    txt = jsonencode (value);
+  endif
+  tmp = [file ".tmp"];
+  fid = fopen (tmp, "w");
+  if (fid < 0)
+    error ("lafortune:unwritable", "repro_save: cannot write '%s'", tmp);
+  endif
+  fputs (fid, txt);
+  if (fclose (fid) != 0)
+    error ("lafortune:unwritable", "repro_save: writing '%s' failed", tmp);
+  endif
+  [err, msg] = rename (tmp, file);
+  if (err)
+    error ("lafortune:unwritable", "repro_save: cannot rename onto '%s': %s", file, msg);
+  endif
+endfunction

@@ -1,0 +1,30 @@
+## Copyright (C) 2026 The lafortune developers
+## SPDX-License-Identifier: GPL-3.0-or-later
+
+## -*- texinfo -*-
+## @deftypefn {} {} repro_spp (@var{material})
+## Step 5 of `make reproduce`, error against run time for rendering: the
+## measured data rendered with fewer samples per pixel, render time and PSNR
+## against the full render.  Writes RESULTS/spp/MATERIAL.json.
+## @end deftypefn
+function repro_spp (material)
+  c = repro_config ();
+  b = merl_read (fullfile (c.results, "data", [material ".binary"]));
+  ref = exrread (fullfile (c.results, "render", [material "-measured.exr"]));
+  mj = jsondecode (fileread (fullfile (c.results, "render", [material "-measured.json"])));
+  scene = repro_scene (c);
+  R = struct ("material", material, "reference_spp", scene.spp,
+              "reference_time", mj.info.time_total, "spp", c.spp_study,
+              "time", zeros (size (c.spp_study)), "psnr", zeros (size (c.spp_study)));
+  for i = 1:numel (c.spp_study)
+    scene.spp = c.spp_study(i);
+    scene.seed = 1000 + i;        # other samples than the reference's
+    [img, info] = rt_render (scene, b, "progress", false);
+    R.time(i) = info.time_total;
+    R.psnr(i) = img_psnr (ref, img);
+    printf ("reproduce: [%s] %3d spp: %.2f s, PSNR %.2f dB against %d spp\n", material,
+            c.spp_study(i), R.time(i), R.psnr(i), R.reference_spp);
+    fflush (stdout);
+  endfor
+  repro_save (fullfile (c.results, "spp", [material ".json"]), R);
+endfunction

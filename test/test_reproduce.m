@@ -1,0 +1,66 @@
+## Copyright (C) 2026 The lafortune developers
+## SPDX-License-Identifier: GPL-3.0-or-later
+##
+## Integration test: a reduced `make reproduce` (QUICK=1: small images, few
+## samples) into a scratch folder, on ../shared/data/merl-proxy when present
+## and on the built-in stand-ins otherwise; report.md and summary.json must
+## exist and hold finite numbers, and a second run must redo nothing.
+## Run by `make check` (which sets LAFORTUNE_TOP).
+
+%!test
+%! top = getenv ("LAFORTUNE_TOP");
+%! if (isempty (top))
+%!   top = pwd ();
+%! endif
+%! assert (exist (fullfile (top, "Makefile"), "file") == 2, "run from the project's top folder");
+%! out = tempname ();
+%! proxy = getenv ("MERL_PROXY_DIR");
+%! if (isempty (proxy) || ! isfolder (proxy))
+%!   proxy = fullfile (out, "no-merl-files");
+%!   printf ("test_reproduce: no ../shared/data/merl-proxy: the built-in stand-ins are used\n");
+%! endif
+%! unwind_protect
+%!   cmd = sprintf ("make --no-print-directory -C '%s' reproduce QUICK=1 RESULTS='%s' MERL_DIR='%s' 2>&1",
+%!                  top, out, proxy);
+%!   [st, txt] = system (cmd);
+%!   if (st != 0)
+%!     printf ("%s\n", txt);
+%!   endif
+%!   assert (st, 0);
+%!   rep = fileread (fullfile (out, "report.md"));
+%!   ## the first lines say which data was used
+%!   head = strjoin (strsplit (rep, "\n")(1:4), "\n");
+%!   assert (! isempty (regexp (head, "green-metallic-paint.*(neural-network|stand-in|MERL measurement)")));
+%!   assert (! isempty (strfind (rep, "| green-metallic-paint | 2 | 31.44 dB |")));
+%!   assert (isempty (regexp (rep, "NaN|Inf")));
+%!   S = jsondecode (fileread (fullfile (out, "summary.json")));
+%!   for mat = {"green_metallic_paint", "red_plastic"}
+%!     s = S.materials.(mat{1});
+%!     for f = {"psnr_inplane_pov", "psnr_inplane_rt", "psnr_hemisphere_pov", "fit_rmse_inplane", ...
+%!              "fit_time_inplane", "render_time_measured", "render_time_pov", "spp_psnr", "spp_time"}
+%!       v = s.(f{1});
+%!       assert (isnumeric (v) && ! isempty (v) && all (isfinite (v(:))), sprintf ("%s.%s", mat{1}, f{1}));
+%!     endfor
+%!     assert (numel (s.psnr_inplane_pov), 3);
+%!     ## more lobes never fit worse (the growing fit)
+%!     assert (all (diff (s.fit_rmse_inplane) <= 1e-12));
+%!     ## the two renderers agree on the same model
+%!     assert (all (s.renderers_psnr > 30));
+%!   endfor
+%!   for f = {"figures/plane-red-plastic.png", "figures/renders-green-metallic-paint.png", ...
+%!            "figures/fit-trace.png", "figures/spp.png", "fit/red-plastic-inplane-2.json", ...
+%!            "fit/red-plastic-inplane-2.brdf", "render/red-plastic-measured.exr"}
+%!     assert (exist (fullfile (out, f{1}), "file") == 2, f{1});
+%!   endfor
+%!   ## incremental: a second run redoes nothing
+%!   t0 = dir (fullfile (out, "report.md")).datenum;
+%!   [st, txt] = system (cmd);
+%!   assert (st, 0);
+%!   assert (isempty (regexp (txt, "fitting|rendering|POV-Ray render|figures")), txt);
+%!   assert (dir (fullfile (out, "report.md")).datenum, t0);
+%! unwind_protect_cleanup
+%!   if (strncmp (out, tempdir (), numel (tempdir ())) && isfolder (out))
+%!     confirm_recursive_rmdir (false, "local");
+%!     rmdir (out, "s");
+%!   endif
+%! end_unwind_protect
