@@ -168,14 +168,32 @@ function s = shell_quote (s)
   s = ["'", strrep(s, "'", "'\\''"), "'"];
 endfunction
 
-## the lines of POV-Ray's output that say what went wrong
+## what POV-Ray said after its banner, long lines rejoined
 function msg = pov_message (out)
-  lines = strsplit (out, "\n");
-  keep = ! cellfun (@isempty, regexp (lines, "(rror|arning|^File |line \\d|Cannot|cannot|failed)", "once"));
-  keep &= cellfun (@isempty, regexp (lines, "user configuration file", "once"));
-  msg = strtrim (strjoin (lines(keep), "\n"));
+  lines = strsplit (strrep (out, "\r", "\n"), "\n");
+  h = find (strncmp (lines, "==== [", 6), 1);
+  if (isempty (h))
+    h = 0;
+  endif
+  lines = lines(h+1:end);
+  drop = strncmp (lines, "==== [", 6) | strncmp (lines, "Rendered ", 9) ...
+         | ! cellfun (@isempty, regexp (lines, "configuration file", "once")) ...
+         | cellfun (@isempty, strtrim (lines));
+  lines = lines(! drop);
+  msg = "";
+  for k = 1:numel (lines)
+    if (k > 1 && lines{k}(1) == " ")
+      msg = [msg, " ", strtrim(lines{k})];        # POV-Ray wraps at 80 columns
+    else
+      msg = [msg, "\n", strtrim(lines{k})];
+    endif
+  endfor
+  msg = strtrim (msg);
+  if (numel (msg) > 2000)
+    msg = [msg(1:2000), " ..."];
+  endif
   if (isempty (msg))
-    msg = strtrim (out(max (1, end - 500):end));
+    msg = "(no message)";
   endif
 endfunction
 
@@ -211,10 +229,6 @@ endfunction
 %! m = struct ("rho_d", [0.1 0.2 0.3], "Cxy", [-1 -1 -1], "Cz", [1 1 1], "e", [30 30 30]);
 
 %!test
-%! if (system ("command -v povray > /dev/null 2>&1") != 0)
-%!   printf ("skipped: povray is not installed\n");
-%!   return;
-%! endif
 %! [img, info] = pov_render (sc, m, "entries", 32);
 %! assert (size (img), [12 16 3]);
 %! assert (img(1,1,:), zeros (1, 1, 3));          # background

@@ -31,8 +31,8 @@
 ## spheres-on-a-plane scene would lose its cast shadows.)
 ##
 ## A Lafortune @var{material} gets one table per term: the diffuse term and
-## each lobe, summed by an @code{average} pigment (values scaled by the
-## number of terms).  Each table has its own entries, placed where its term
+## each lobe, summed by an @code{average} pigment and @code{diffuse}
+## @var{k} for @var{k} tables.  Each table has its own entries, placed where its term
 ## bends (see @qcode{"knots"}), so a sharp lobe (exponents in the thousands)
 ## gets its entries around its peak and a broad one a few.  A MERL
 ## @var{material} gets one table.
@@ -172,35 +172,38 @@ function info = pov_write_scene (scene, material, file, varargin)
                              "e", m.e(k,:));
       names{end+1} = sprintf ("lobe %d", k);
     endfor
-    emax = max ([m.e(:); 0]);
   else
     terms = {material};
     names = {"measured"};
-    emax = 0;
   endif
   n = opt.dense;
   if (n == 0)
-    span = max (diff (rng_i), diff (rng_o));
-    n = min (2049, max (2 * opt.entries + 1, ceil (8 * span * sqrt (emax)) + 1));
+    n = max (257, 2 * opt.entries + 1);
   endif
-  ti = linspace (rng_i(1), rng_i(2), n)';
-  to = linspace (rng_o(1), rng_o(2), n)';
+  ndense = n;
   if (opt.crop && ! isempty (S.ti))
-    Md = reach_mask (S.ti, S.to, ti, to, opt.pad);
+    samp = [S.ti, S.to];
   else
-    Md = true (n, n);
+    samp = [];
   endif
+  gam = acos (max (min (L * V', 1), -1));
   nt = numel (terms);
-  R = cell (1, nt);
+  D = cell (1, nt);
   contrib = zeros (1, nt);
-  tot = 0;
+  peak = 0;
   for q = 1:nt
-    R{q} = scene_slice (scene, terms{q}, ti, to);
-    tot += R{q};
-    contrib(q) = masked_max (R{q}, Md);
+    D{q} = term_grid (scene, terms{q}, rng_i, rng_o, n, samp, opt, gam);
+    contrib(q) = D{q}.max;
+    peak = max (peak, D{q}.max);
   endfor
-  peak = masked_max (tot, Md);
-  clear tot;
+  ## the whole material on a common grid, for its largest radiance
+  t = linspace (rng_i(1), rng_i(2), 129);
+  u = linspace (rng_o(1), rng_o(2), 129);
+  Mc = true (129);
+  if (! isempty (samp))
+    Mc = reach_mask (samp, t', u', opt.pad);
+  endif
+  peak = max (peak, masked_max (scene_slice (scene, material, t, u), Mc));
   if (peak > 0)
     contrib /= peak;
   endif
@@ -209,18 +212,27 @@ function info = pov_write_scene (scene, material, file, varargin)
     kept(1) = contrib(1) > 0;          # lobe_tol applies to lobes
   endif
 
-  ## entries of each kept table
+  ## entries of each kept table; the error allowed is shared between the
+  ## tables that are not flat (flat ones are exact), by their size, and
+  ## between the two levels
   nk = nnz (kept);
-  tol = opt.table_tol * peak / max (nk, 1) / 2;
-  c = cos (ti);
+  flat = cellfun (@(d) d.flat, D);
+  share = contrib .* kept .* ! flat;
+  share /= max (sum (share), realmin);
   tabs = struct ("name", names, "contribution", num2cell (contrib), "kept", num2cell (kept),
                  "outer", 0, "inner", []);
   body = {};
-  gam = acos (max (min (L * V', 1), -1));
   for q = find (kept)
-    T = extend_c1 (R{q} ./ c, ti, to, gam);
-    R{q} = [];
-    Ko = pov_knots (reshape (T, n, 3 * n), c, repmat (Md, 1, 3), tol, opt.entries, opt.knots);
+    ti = D{q}.ti;
+    to = D{q}.to;
+    T = D{q}.T;
+    Md = D{q}.M;
+    D{q} = [];
+    c = cos (ti);
+    tol = opt.table_tol * peak * share(q) / 2;
+    n = numel (ti);
+    Ko = pov_knots (ti, reshape (T, n, 3 * n), c, repmat (Md, 1, 3), tol, opt.entries,
+                    opt.knots);
     io = find (Ko);
     ## each inner table serves the ti between its neighbours
     lo = io([1 1:end-1]);
@@ -228,12 +240,12 @@ function info = pov_write_scene (scene, material, file, varargin)
     cs = [zeros(1, n); cumsum(Md, 1)];
     Mi = (cs(hi+1,:) - cs(lo,:))' > 0;                     # n x numel(io)
     G = permute (T(io,:,:), [2 3 1]);                      # n x 3 x numel(io)
-    Ki = pov_knots (G, reshape (c(io), 1, 1, []), reshape (Mi, n, 1, []), tol,
+    Ki = pov_knots (to, G, reshape (c(io), 1, 1, []), reshape (Mi, n, 1, []), tol,
                     opt.entries, opt.knots);
     tabs(q).outer = numel (io);
     tabs(q).inner = sum (Ki, 1);
     T(abs (T) < 1e-12 * peak) = 0;     # no 1e-50s in the file
-    body{end+1} = table_sdl (sprintf ("Lf_term%d", q), names{q}, T * nk, ti, to, io, Ki, L, V);
+    body{end+1} = table_sdl (sprintf ("Lf_term%d", q), names{q}, T, ti, to, io, Ki, L, V);
   endfor
 
   ## write
@@ -268,7 +280,7 @@ function info = pov_write_scene (scene, material, file, varargin)
   info = struct ("file", file, "bytes", d.bytes, "terms", tabs,
                  "entries", sum ([tabs.outer]) + sum ([tabs.inner]),
                  "ti_range", rng_i, "to_range", rng_o, "peak", peak, "objects", keep,
-                 "faces_dropped", nfd, "dense", n, "time", toc (t0));
+                 "faces_dropped", nfd, "dense", ndense, "time", toc (t0));
 endfunction
 
 function opt = check_opts (opt, fname)
@@ -323,22 +335,101 @@ function check_objects (ob, fname)
   endfor
 endfunction
 
-## reachable cells of the dense (ti, to) grid: for each ti row, the range of
-## to of the samples within PAD of it, widened by PAD
-function Md = reach_mask (sti, sto, ti, to, pad)
-  n = numel (ti);
-  h = max (ti(2) - ti(1), eps);
-  r = min (max (round ((sti - ti(1)) / h) + 1, 1), n);
-  lo0 = accumarray (r, sto, [n 1], @min, inf);
-  hi0 = accumarray (r, sto, [n 1], @max, -inf);
-  lo = lo0;
-  hi = hi0;
-  w = ceil (pad / h);
+## Dense grids for one term, and its table on them.  The grids are not
+## uniform: starting from a uniform one, twice, the term is tabulated and the
+## points are redistributed along each axis with density proportional to the
+## square root of the largest second derivative along it (the spacing that
+## equalises the error of linear interpolation), plus a uniform share.  Sharp
+## lobes thus get fine sampling around their peak.
+function D = term_grid (scene, term, rng_i, rng_o, n, samp, opt, gam)
+  passes = 2 * ! strcmp (opt.knots, "uniform");
+  flat = false;
+  n0 = n;
+  if (passes)
+    n0 = min (n, 129);                          # a coarse first look
+  endif
+  ti = linspace (rng_i(1), rng_i(2), n0)';
+  to = linspace (rng_o(1), rng_o(2), n0)';
+  for pass = 0:passes
+    R = scene_slice (scene, term, ti, to);
+    c = cos (ti);
+    T = extend_c1 (R ./ c, ti, to, gam,
+                   @(t, p) scene_slice (scene, term, t, p) / cos (t));
+    ## what any normal can reach (the extension beyond it only serves the
+    ## interpolation next to it), and with samples what the view reaches
+    M = to' >= abs (ti - gam) - opt.pad & to' <= min (ti + gam, 2 * pi - ti - gam) + opt.pad;
+    if (! isempty (samp))
+      M &= reach_mask (samp, ti, to, opt.pad);
+    endif
+    if (pass == passes)
+      break;
+    endif
+    G = T .* c;
+    ki = curvature (ti, G, M);
+    ko = curvature (to, permute (G, [2 1 3]), M');
+    if (pass == 0 && ! any (ki > 1e-9 * max (abs (G(:)))) && ! any (ko > 1e-9 * max (abs (G(:)))))
+      flat = true;                              # (a diffuse term): exact with 2
+      break;                                    # entries, no refining
+
+    endif
+    nn = n;
+    if (pass < passes - 1)
+      nn = min (n, 257);                        # an intermediate look
+    endif
+    ti = regrid (ti, ki, nn);
+    to = regrid (to, ko, nn);
+  endfor
+  D.flat = flat;
+  D.ti = ti;
+  D.to = to;
+  D.T = T;
+  D.M = M;
+  D.max = masked_max (R, M);
+endfunction
+
+## largest |second derivative| along dimension 1 of G over the masked columns
+function k = curvature (x, G, M)
+  n = numel (x);
+  d = diff (G, 1, 1) ./ diff (x);
+  k2 = abs (2 * diff (d, 1, 1) ./ (x(3:end) - x(1:end-2)));
+  k2(! (M(2:end-1,:) & true (size (k2)))) = 0;
+  k = max (reshape (permute (k2, [1 3 2]), n - 2, []), [], 2);
+  k = [k(1); k; k(end)];
+endfunction
+
+function y = regrid (x, k, n)
+  r = sqrt (k);
+  w = min (5, numel (r));                       # widen the peaks a little
+  rr = r;
   for s = 1:w
-    lo(1+s:end) = min (lo(1+s:end), lo0(1:end-s));
-    lo(1:end-s) = min (lo(1:end-s), lo0(1+s:end));
-    hi(1+s:end) = max (hi(1+s:end), hi0(1:end-s));
-    hi(1:end-s) = max (hi(1:end-s), hi0(1+s:end));
+    rr(1+s:end) = max (rr(1+s:end), r(1:end-s));
+    rr(1:end-s) = max (rr(1:end-s), r(1+s:end));
+  endfor
+  len = x(end) - x(1);
+  tot = trapz (x, rr);
+  if (! (tot > 0) || ! (len > 0))
+    y = linspace (x(1), x(end), n)';
+    return;
+  endif
+  rr += 0.3 * tot / len;                        # 23 % of the points uniform
+  C = cumtrapz (x, rr);
+  y = interp1 (C / C(end), x, linspace (0, 1, n)');
+  y([1 end]) = x([1 end]);
+endfunction
+
+## reachable cells of the (ti, to) grid: for each ti row, the range of to of
+## the samples within PAD of it, widened by PAD
+function Md = reach_mask (samp, ti, to, pad)
+  n = numel (ti);
+  [sti, o] = sort (samp(:,1));
+  sto = samp(o,2);
+  a = lookup (sti, ti - pad) + 1;               # samples a:b lie within PAD
+  b = lookup (sti, ti + pad);
+  lo = inf (n, 1);
+  hi = -inf (n, 1);
+  for i = find (b >= a)'
+    lo(i) = min (sto(a(i):b(i)));
+    hi(i) = max (sto(a(i):b(i)));
   endfor
   Md = to' >= lo - pad & to' <= hi + pad;
 endfunction
@@ -349,25 +440,45 @@ endfunction
 ## whole table cell.  Continue each row linearly (in to) from the boundary
 ## instead: the table is then smooth to first order across it.  Extrapolated
 ## values are kept >= 0.
-function T = extend_c1 (T, ti, to, gam)
+function T = extend_c1 (T, ti, to, gam, evalrow)
   n = numel (to);
+  to = to(:)';
   lo = abs (ti - gam);
   hi = min (ti + gam, 2 * pi - ti - gam);
-  in = to' >= lo & to' <= hi;                   # n x n
-  rowsok = sum (in, 2) >= 2;
-  j1 = n + 1 - sum (cummax (in, 2), 2);         # first reachable column
-  j2 = sum (cummax (fliplr (in), 2), 2);        # last
-  for i = find (rowsok)'
-    a = j1(i);
-    b = j2(i);
-    if (a > 1)
-      s = (T(i,a+1,:) - T(i,a,:)) / (to(a+1) - to(a));
-      T(i,1:a-1,:) = max (T(i,a,:) + s .* (to(1:a-1)' - to(a)), 0);
+  in = to >= lo & to <= hi;                     # n x n
+  ok = sum (in, 2) >= 3;
+  j1 = min (n + 1 - sum (cummax (in, 2), 2), n - 1);   # first reachable column
+  j2 = max (sum (cummax (fliplr (in), 2), 2), 2);      # last
+  r = (1:rows (T))';
+  for ch = 1:size (T, 3)
+    X = T(:,:,ch);
+    a1 = X(sub2ind (size (X), r, j1));
+    s1 = (X(sub2ind (size (X), r, j1 + 1)) - a1) ./ (to(j1 + 1) - to(j1))';
+    a2 = X(sub2ind (size (X), r, j2));
+    s2 = (a2 - X(sub2ind (size (X), r, j2 - 1))) ./ (to(j2) - to(j2 - 1))';
+    below = ok & (1:n) < j1;
+    above = ok & (1:n) > j2;
+    E1 = max (a1 + s1 .* (to - to(j1)'), 0);
+    E2 = max (a2 + s2 .* (to - to(j2)'), 0);
+    X(below) = E1(below);
+    X(above) = E2(above);
+    T(:,:,ch) = X;
+  endfor
+  ## rows whose reachable range holds fewer than 3 grid points (ti near 0, or
+  ## light and viewer nearly aligned): 3 points across it, evaluated exactly
+  for i = find (! ok)'
+    p = linspace (lo(i), hi(i), 3);
+    v = reshape (evalrow (ti(i), p), 3, []);    # points x channels
+    if (p(3) > p(1))
+      sl = (v(2,:) - v(1,:)) / (p(2) - p(1));
+      sh = (v(3,:) - v(2,:)) / (p(3) - p(2));
+      row = interp1 (p', v, min (max (to', p(1)), p(3)));
+    else
+      sl = sh = zeros (1, columns (v));
+      row = repmat (v(1,:), n, 1);
     endif
-    if (b < n)
-      s = (T(i,b,:) - T(i,b-1,:)) / (to(b) - to(b-1));
-      T(i,b+1:n,:) = max (T(i,b,:) + s .* (to(b+1:n)' - to(b)), 0);
-    endif
+    row += (to' < p(1)) .* sl .* (to' - p(1)) + (to' > p(3)) .* sh .* (to' - p(3));
+    T(i,:,:) = reshape (max (row, 0), 1, n, []);
   endfor
 endfunction
 
@@ -462,8 +573,10 @@ function s = light_sdl (scene, L, cam)
                vec (L * 1000 * ext));
 endfunction
 
+## the average of the tables, times their number: their sum
 function s = texture_sdl (q)
-  fin = "finish { ambient 0 emission 0 diffuse 1 brilliance 1 specular 0 phong 0 reflection 0 }";
+  fin = sprintf ("finish { ambient 0 emission 0 diffuse %d brilliance 1 specular 0 phong 0 reflection 0 }",
+                 max (numel (q), 1));
   if (isempty (q))
     pig = "pigment { rgb 0 }";
   elseif (numel (q) == 1)
@@ -537,6 +650,7 @@ endfunction
 %!   assert (! isempty (strfind (s, "orthographic location <0, 0, 5> direction <0, 0, -1> right <3.33333333333, 0, 0> up <0, 2.5, 0>")));
 %!   assert (! isempty (strfind (s, "slope { <0, 0.6, 0.8> } pigment_map")));
 %!   assert (! isempty (strfind (s, "average pigment_map { [1 Lf_term1] [1 Lf_term2] }")));
+%!   assert (! isempty (strfind (s, "diffuse 2 ")));
 %!   assert ({info.terms.name}, {"diffuse", "lobe 1"});
 %!   assert ([info.terms.outer] <= 16 & [info.terms.outer] >= 2);
 %!   assert (all ([info.terms.inner] <= 16));
@@ -564,7 +678,7 @@ endfunction
 %! end_unwind_protect
 
 %!test
-%! ## the tabulated values are scene_slice / cos(ti), scaled by the number of terms
+%! ## the tabulated values are scene_slice / cos(ti)
 %! f = [tempname() ".pov"];
 %! unwind_protect
 %!   m1 = m; m1.rho_d = [0 0 0];
@@ -583,8 +697,13 @@ endfunction
 %!   for i = 1:rows (x)
 %!     R(i,:) = squeeze (scene_slice (sc, m1, ti(i), to(i)))' / cos (ti(i));
 %!   endfor
-%!   assert (x(:,3:5), R, 1e-6 * max (R(:)));
+%!   ## where a normal can reach (ti, to); elsewhere the rows are continued
+%!   gam = acos (sc.light.direction * [0 0 1]' / norm (sc.light.direction));
+%!   ok = abs (ti - to) <= gam & gam <= ti + to;
+%!   assert (nnz (ok) > 20);
+%!   assert (x(ok,3:5), R(ok,:), 1e-6 * max (R(:)));
 %!   assert (max (R(:)) > 1);
+%!   assert (all (x(:,3:5)(:) >= 0));
 %! unwind_protect_cleanup
 %!   unlink (f);
 %! end_unwind_protect

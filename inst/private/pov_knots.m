@@ -2,20 +2,21 @@
 ## SPDX-License-Identifier: GPL-3.0-or-later
 
 ## -*- texinfo -*-
-## @deftypefn {} {@var{K} =} pov_knots (@var{G}, @var{W}, @var{M}, @var{tol}, @var{nmax}, @var{mode})
+## @deftypefn {} {@var{K} =} pov_knots (@var{x}, @var{G}, @var{W}, @var{M}, @var{tol}, @var{nmax}, @var{mode})
 ## Choose the entries of piecewise-linear tables (private, for
 ## @code{pov_write_scene}).
 ##
 ## @var{G} is @var{n} x @var{m} x @var{B}: @var{B} independent tables, each
-## sampled densely at @var{n} points along the table axis (dimension 1); the
+## sampled densely at the @var{n} ascending points @var{x} along the table
+## axis (dimension 1; not necessarily evenly spaced); the
 ## @var{m} columns are functions that share the entries (the error is the
 ## maximum over them).  @var{W} (weights) and @var{M} (logical mask: where the
 ## error counts) broadcast to the size of @var{G}.  For each table the first
 ## and last rows with any @var{M} are always entries; rows outside them are
 ## not interpolated.
 ##
-## @var{mode} @qcode{"uniform"}: @var{nmax} entries evenly spaced between those
-## two.  @qcode{"adaptive"}: refinement, starting from the two end entries;
+## @var{mode} @qcode{"uniform"}: @var{nmax} entries, the dense points nearest
+## to even spacing between those two.  @qcode{"adaptive"}: refinement, starting from the two end entries;
 ## each pass splits every interval whose largest weighted error
 ## |@var{W} (@var{G} - linear interpolation)| exceeds @var{tol} at the dense
 ## point of that largest error, until no interval exceeds @var{tol} or the
@@ -27,7 +28,8 @@
 ##
 ## @var{K} is @var{n} x @var{B} logical: the entries of each table.
 ## @end deftypefn
-function K = pov_knots (G, W, M, tol, nmax, mode)
+function K = pov_knots (x, G, W, M, tol, nmax, mode)
+  x = x(:);
   [n, m, B] = size (G);
   W = W .* ones (size (G));
   M = logical (M) & true (size (G));
@@ -44,32 +46,37 @@ function K = pov_knots (G, W, M, tol, nmax, mode)
   endfor
   if (strcmp (mode, "uniform"))
     for b = 1:B
-      K(unique (round (linspace (first(b), last(b), nmax))), b) = true;
+      v = linspace (x(first(b)), x(last(b)), nmax)';
+      i = max (lookup (x, v), 1);
+      j = min (i + 1, n);
+      up = abs (x(j) - v) < abs (x(i) - v);
+      i(up) = j(up);
+      K(i, b) = true;
     endfor
     return;
   endif
   K(sub2ind ([n B], first, 1:B)) = true;
   K(sub2ind ([n B], last, 1:B)) = true;
   if (B == 1)
-    K = greedy_one (G, W, M, tol, nmax, first, last, K);
+    K = greedy_one (x, G, W, M, tol, nmax, first, last, K);
   else
-    K = refine_batch (G, W, M, tol, nmax, first, last, K);
+    K = refine_batch (x, G, W, M, tol, nmax, first, last, K);
   endif
 endfunction
 
 ## One table with many columns: one interval at a time, recomputing only the
 ## two halves of the interval just split.
-function K = greedy_one (G, W, M, tol, nmax, first, last, K)
+function K = greedy_one (x, G, W, M, tol, nmax, first, last, K)
   kn = [first; last];
-  [e, a] = interval_err (G, W, M, first, last);
+  [e, a] = interval_err (x, G, W, M, first, last);
   while (numel (kn) < nmax)
     [emax, j] = max (e);
     if (! (emax > tol))
       break;
     endif
     p = a(j);
-    [e1, a1] = interval_err (G, W, M, kn(j), p);
-    [e2, a2] = interval_err (G, W, M, p, kn(j+1));
+    [e1, a1] = interval_err (x, G, W, M, kn(j), p);
+    [e2, a2] = interval_err (x, G, W, M, p, kn(j+1));
     kn = [kn(1:j); p; kn(j+1:end)];
     e = [e(1:j-1); e1; e2; e(j+1:end)];
     a = [a(1:j-1); a1; a2; a(j+1:end)];
@@ -77,14 +84,14 @@ function K = greedy_one (G, W, M, tol, nmax, first, last, K)
   K(kn) = true;
 endfunction
 
-function [emax, amax] = interval_err (G, W, M, lo, hi)
+function [emax, amax] = interval_err (x, G, W, M, lo, hi)
   emax = 0;
   amax = lo;
   if (hi - lo < 2)
     return;
   endif
   r = (lo+1:hi-1)';
-  t = (r - lo) / (hi - lo);
+  t = (x(r) - x(lo)) / (x(hi) - x(lo));
   E = W(r,:) .* abs (G(r,:) - ((1 - t) .* G(lo,:) + t .* G(hi,:)));
   E(! M(r,:)) = 0;
   [emax, i] = max (E(:));
@@ -92,7 +99,7 @@ function [emax, amax] = interval_err (G, W, M, lo, hi)
 endfunction
 
 ## Many tables with few columns: passes vectorised over all tables.
-function K = refine_batch (G, W, M, tol, nmax, first, last, K)
+function K = refine_batch (x, G, W, M, tol, nmax, first, last, K)
   [n, m, B] = size (G);
   idx = (1:n)';
   M &= reshape (idx >= first & idx <= last, n, 1, B);
@@ -101,7 +108,7 @@ function K = refine_batch (G, W, M, tol, nmax, first, last, K)
     ## linear interpolation between the current entries, all tables at once
     prev = max (cummax (K .* idx, 1), 1);
     nxt = min (flipud (cummin (flipud (K .* idx + (! K) * (n + 1)), 1)), n);
-    t = reshape ((idx - prev) ./ max (nxt - prev, 1), n, 1, B);
+    t = reshape ((x(idx) - x(prev)) ./ max (x(nxt) - x(prev), realmin), n, 1, B);
     lin = (1 - t) .* G(reshape (prev, n, 1, B) + off) ...
           + t .* G(reshape (nxt, n, 1, B) + off);
     E = W .* abs (G - lin);

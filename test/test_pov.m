@@ -1,0 +1,203 @@
+## Copyright (C) 2026 The lafortune developers
+## SPDX-License-Identifier: GPL-3.0-or-later
+##
+## test_pov: POV-Ray against the Octave raytracer, and what pov_write_scene
+## leaves out.  Needs povray (3.7) and the exrread oct-file.
+## Run: test ("test/test_pov.m")
+
+%!shared m1, m3, rel
+%! ## one sharp-ish lobe, and Lafortune et al.'s 3-lobe blue paint (REFERENCE.md)
+%! m1 = struct ("rho_d", [0.05 0.1 0.2], "Cxy", [-1 -1 -1], "Cz", [0.95 0.95 0.95],
+%!              "e", [60 60 60]);
+%! m3 = struct ("rho_d", [0.3094 0.39667 0.70837] * pi,
+%!              "Cxy", [0.870567 0.857255 0.670982; -0.451218 -0.406681 -0.477976;
+%!                      -1.031545 -1.029426 -1.026588],
+%!              "Cz", [0.803624 0.774290 0.586674; 0.023123 0.017625 0.227295;
+%!                     0.706734 0.696530 0.687715],
+%!              "e", [21.820103 18.597755 7.472717; 2.774499 2.581499 3.677653;
+%!                    66.899060 63.767912 57.489181]);
+%! m3.rho_d /= pi;
+%! ## largest change relative to the image's peak
+%! rel = @(a, b) max (abs (a(:) - b(:))) / max (abs (a(:)));
+
+## ---- cross-check: pov_render against rt_render, one sample at pixel centres
+
+%!test
+%! sc = scene_make ("sphere", "size", [64 64], "spp", 1);
+%! ref = rt_render (sc, m1, "jitter", false, "mode", "direct", "progress", false);
+%! [img, info] = pov_render (sc, m1);
+%! assert (size (img), size (ref));
+%! assert (img_psnr (ref, img) >= 60);
+%! ## and against rt_render's own default (its interpolated slice)
+%! ref2 = rt_render (sc, m1, "jitter", false, "progress", false);
+%! assert (img_psnr (ref2, img) >= 50);
+%! ## not mirrored: the highlight is up and left, toward the light [-1 1 1]
+%! [~, i] = max (img(:,:,2)(:));
+%! [r, c] = ind2sub ([64 64], i);
+%! assert (r < 32 && c < 32);
+
+%!test
+%! ## spheres on a plane, with cast shadows, three lobes
+%! sc = scene_make ("spheres", "size", [64 64], "spp", 1);
+%! ref = rt_render (sc, m3, "jitter", false, "mode", "direct", "progress", false);
+%! img = pov_render (sc, m3);
+%! assert (img_psnr (ref, img) >= 50);
+%! ## the shadows are there: some lit-facing plane pixels are black in both
+%! dark = all (ref < 1e-6 * max (ref(:)), 3) & all (img < 1e-6 * max (ref(:)), 3);
+%! assert (nnz (dark) > 20);
+%! ## and an emissive-only table (no shadows) would have failed: each shadow pixel
+%! ## of rt_render is dark in POV-Ray too
+%! sh = all (ref == 0, 3) & any (img > 1e-3 * max (ref(:)), 3);
+%! assert (nnz (sh), 0);
+
+%!test
+%! ## a sharp lobe (e = 2000): the entries go where it bends, 256 suffice
+%! ms = struct ("rho_d", [0.05 0.05 0.05], "Cxy", -[1 1 1], "Cz", [1 1 1], "e", 2000 * [1 1 1]);
+%! sc = scene_make ("sphere", "size", [64 64], "spp", 1);
+%! ref = rt_render (sc, ms, "jitter", false, "mode", "direct", "progress", false);
+%! [img, info] = pov_render (sc, ms);
+%! assert (img_psnr (ref, img) >= 50);
+%! assert (max ([info.terms.outer]) <= 256 && max ([info.terms.inner]) <= 256);
+%! ## evenly spaced entries do much worse with the same budget
+%! [img_u, iu] = pov_render (sc, ms, "knots", "uniform", "entries", 128);
+%! [img_a, ia] = pov_render (sc, ms, "entries", 128, "table_tol", 0);
+%! assert (img_psnr (ref, img_a) > img_psnr (ref, img_u) + 6);
+%! assert (ia.bytes < iu.bytes);
+
+## ---- what is left out: the file shrinks, the image stays (1e-3 of the peak)
+
+%!test
+%! ## lobes below lobe_tol
+%! sc = scene_make ("sphere", "size", [48 48], "spp", 1);
+%! m = m1;
+%! m.Cxy(2,:) = 0.03; m.Cz(2,:) = 0.03; m.e(2,:) = 4;      # (0.03 cos gamma)^4: ~1e-6 of the peak
+%! [a, ia] = pov_render (sc, m, "lobe_tol", 0, "entries", 128);
+%! [b, ib] = pov_render (sc, m, "entries", 128);
+%! assert ([ia.terms.kept], [true true true]);
+%! assert ([ib.terms.kept], [true true false]);
+%! assert (ib.terms(3).contribution < 1e-4 && ib.terms(3).contribution > 0);
+%! assert (ib.bytes < ia.bytes);
+%! assert (rel (a, b) <= 1e-3);
+
+%!test
+%! ## angle ranges that visible surfaces do not reach: the middle of a sphere
+%! sc = scene_make ("sphere", "size", [48 48], "spp", 1);
+%! sc.camera.extent /= 3;
+%! m = m1; m.e(:) = 20;                                  # accurate with 256 entries
+%! [a, ia] = pov_render (sc, m, "crop", false);
+%! [b, ib] = pov_render (sc, m);
+%! assert (ib.bytes < 0.9 * ia.bytes);
+%! assert (diff (ib.to_range) < 0.5 * diff (ia.to_range));
+%! assert (rel (a, b) <= 1e-3);
+
+%!test
+%! ## geometry outside the view that casts no shadow into it
+%! sc = scene_make ("spheres", "size", [48 48], "spp", 1);
+%! k = numel (sc.objects);
+%! sc.objects(k+1) = sc.objects(2);
+%! sc.objects(k+1).center = [30 1 0];                   # far right, out of view
+%! sc.objects(k+2) = sc.objects(2);
+%! sc.objects(k+2).center = [0 0.5 20];                 # behind the camera
+%! [V, F] = deal ([0 0 0; 1 0 0; 0 1 0; 1 1 0] + [0 5 -40], [1 2 3; 2 4 3]);
+%! V = repmat (V, 50, 1) + kron ((0:49)', [0.1 0 0; 0.1 0 0; 0.1 0 0; 0.1 0 0]);
+%! F = repmat (F, 50, 1) + 4 * reshape (repmat (0:49, 2, 1), [], 1);
+%! sc.objects(k+3) = struct ("type", "mesh", "center", [], "radius", [], "point", [],
+%!                           "normal", [], "vertices", V, "faces", F, "normals", []);
+%! ## in view but off the frame, its shadow falls on the visible ground: kept
+%! ldir = sc.light.direction;
+%! sc.objects(k+4) = sc.objects(2);
+%! sc.objects(k+4).center = [1 0 1.5] + 9 * ldir;      # over a free bit of ground
+%! sc.objects(k+4).radius = 0.5;
+%! [a, ia] = pov_render (sc, m1, "cull", false, "entries", 128);
+%! [b, ib] = pov_render (sc, m1, "entries", 128);
+%! assert (ia.objects, true (1, k + 4));
+%! assert (ib.objects, [true(1, k), false, false, false, true]);
+%! assert (ib.faces_dropped, 100);
+%! assert (ib.bytes < ia.bytes - 2000);
+%! assert (rel (a, b) <= 1e-3);
+%! ## the shadowing sphere matters: without it the image changes
+%! sc.objects(k+4) = [];
+%! c = pov_render (sc, m1, "entries", 128);
+%! assert (rel (b, c) > 1e-2);
+
+%!test
+%! ## mesh faces outside the view are dropped; the picture stays
+%! sc = scene_make ("torus", "size", [40 40], "spp", 1, "resolution", [32 16]);
+%! sc.camera.extent /= 2;                               # zoom in: part of the torus
+%! [a, ia] = pov_render (sc, m1, "cull", false, "crop", false, "entries", 64);
+%! [b, ib] = pov_render (sc, m1, "crop", false, "entries", 64);
+%! assert (ib.faces_dropped > 0);
+%! assert (ib.bytes < ia.bytes);
+%! assert (rel (a, b) <= 1e-3);
+
+## ---- pov_render's errors and options
+
+%!error id=lafortune:povNotFound pov_render (scene_make ("sphere", "size", [8 8]), struct ("rho_d", [1 1 1], "Cxy", zeros (0, 3), "Cz", zeros (0, 3), "e", zeros (0, 3)), "povray", "/nonexistent/povray")
+%!error id=lafortune:povNotFound pov_render (scene_make ("sphere", "size", [8 8]), struct ("rho_d", [1 1 1], "Cxy", zeros (0, 3), "Cz", zeros (0, 3), "e", zeros (0, 3)), "povray", "no-such-povray-program")
+
+%!test
+%! ## a POV-Ray failure reports POV-Ray's message: a fake povray that fails like a parse error
+%! d = tempname (); mkdir (d);
+%! fake = fullfile (d, "povray");
+%! fid = fopen (fake, "w");
+%! fprintf (fid, "#!/bin/sh\necho \"File 'scene.pov' line 3: Parse Error: Expected 'object', } found instead\"\necho \"Fatal error in parser: Cannot parse input.\"\nexit 1\n");
+%! fclose (fid);
+%! chmod = system (sprintf ("chmod +x '%s'", fake));
+%! unwind_protect
+%!   sc = scene_make ("sphere", "size", [8 8]);
+%!   try
+%!     pov_render (sc, m1, "povray", fake);
+%!     error ("no error");
+%!   catch err
+%!     assert (err.identifier, "lafortune:povFailed");
+%!     assert (! isempty (strfind (err.message, "Parse Error: Expected 'object'")));
+%!   end_try_catch
+%! unwind_protect_cleanup
+%!   confirm_recursive_rmdir (false, "local");
+%!   rmdir (d, "s");
+%! end_unwind_protect
+
+%!test
+%! ## a real parse error: a wrapper breaks the scene, then runs povray
+%! d = tempname (); mkdir (d);
+%! fake = fullfile (d, "povray");
+%! fid = fopen (fake, "w");
+%! fprintf (fid, "#!/bin/sh\nsed -i 's/^camera {/camera { bogus_keyword/' scene.pov\nexec povray \"$@\"\n");
+%! fclose (fid);
+%! system (sprintf ("chmod +x '%s'", fake));
+%! unwind_protect
+%!   sc = scene_make ("sphere", "size", [8 8]);
+%!   try
+%!     pov_render (sc, m1, "povray", fake, "entries", 8);
+%!     error ("no error");
+%!   catch err
+%!     assert (err.identifier, "lafortune:povFailed");
+%!     assert (! isempty (strfind (err.message, "Parse Error")));
+%!     assert (! isempty (strfind (err.message, "bogus_keyword")));
+%!   end_try_catch
+%! unwind_protect_cleanup
+%!   confirm_recursive_rmdir (false, "local");
+%!   rmdir (d, "s");
+%! end_unwind_protect
+
+%!test
+%! ## keep the scene file
+%! sc = scene_make ("sphere", "size", [16 16], "spp", 1);
+%! f = [tempname() ".pov"];
+%! unwind_protect
+%!   [img, info] = pov_render (sc, m1, "keep", f, "entries", 16);
+%!   assert (info.file, f);
+%!   assert (numel (fileread (f)), info.bytes);
+%!   assert (strncmp (fileread (f), "// POV-Ray 3.7 scene", 20));
+%! unwind_protect_cleanup
+%!   unlink (f);
+%! end_unwind_protect
+
+%!test
+%! ## anti-aliasing: POV-Ray's supersampling, close to rt_render's jittered spp
+%! sc = scene_make ("sphere", "size", [32 32], "spp", 16);
+%! ref = rt_render (sc, m1, "mode", "direct", "progress", false);
+%! one = pov_render (sc, m1, "entries", 64);
+%! aa = pov_render (sc, m1, "entries", 64, "antialias", 3);
+%! assert (img_psnr (ref, aa) > img_psnr (ref, one));
+%! assert (img_psnr (ref, aa) >= 35);
