@@ -487,8 +487,12 @@ function [V, F, N] = read_obj (txt, file)
   nl = find (txt == "\n");
   ls = [1, nl(1:end-1) + 1];                 # line starts
   ## first non-blank character of each line (or its newline)
-  nb = find (txt != " ");
-  fs = nb(lookup (nb, ls - 0.5) + 1);
+  fs = ls;
+  lead = find (txt(ls) == " ");
+  if (! isempty (lead))
+    nb = find (txt != " ");
+    fs(lead) = nb(lookup (nb, ls(lead) - 0.5) + 1);
+  endif
   c1 = txt(fs);
   c2 = txt(min (fs + 1, numel (txt)));
   c3 = txt(min (fs + 2, numel (txt)));

@@ -44,8 +44,12 @@
 %!function m = merl_material ()
 %!  ## the MERL-format stand-in of the paper's material when present, else a
 %!  ## synthetic MERL table of a Lafortune model
-%!  f = fullfile (fileparts (which ("rt_render")), "..", "..", "shared", "data", ...
-%!                "merl-proxy", "green-metallic-paint.binary");
+%!  ## MERL_PROXY_DIR is set by `make check`; by default ../shared/data/merl-proxy
+%!  pd = getenv ("MERL_PROXY_DIR");
+%!  if (isempty (pd))
+%!    pd = fullfile (pwd, "..", "shared", "data", "merl-proxy");
+%!  endif
+%!  f = fullfile (pd, "green-metallic-paint.binary");
 %!  if (exist (f, "file"))
 %!    m = merl_read (f);
 %!  else
