@@ -16,15 +16,15 @@
 ## not interpolated.
 ##
 ## @var{mode} @qcode{"uniform"}: @var{nmax} entries, the dense points nearest
-## to even spacing between those two.  @qcode{"adaptive"}: refinement, starting from the two end entries;
-## each pass splits every interval whose largest weighted error
-## |@var{W} (@var{G} - linear interpolation)| exceeds @var{tol} at the dense
-## point of that largest error, until no interval exceeds @var{tol} or the
-## table has @var{nmax} entries (then the worst intervals are split first).
-## Without the @var{nmax} limit the result is that of one-at-a-time greedy
-## refinement (splitting one interval does not change the others); passes are
-## vectorised over all tables.  With sharp features (narrow lobes) this puts
-## the entries where the function bends.
+## to even spacing between those two.  @qcode{"adaptive"}: greedy refinement,
+## starting from the two end entries: the interval with the largest weighted
+## error |@var{W} (@var{G} - linear interpolation)| is split at the dense point
+## of that error, until no interval exceeds @var{tol} or the table has
+## @var{nmax} entries.  A single table is refined one interval at a time;
+## many tables together in vectorised passes that split, in each table, every
+## interval within a factor 2 of its worst (same result once all are under
+## @var{tol}, nearly the same order otherwise).  With sharp features (narrow
+## lobes) this puts the entries where the function bends.
 ##
 ## @var{K} is @var{n} x @var{B} logical: the entries of each table.
 ## @end deftypefn
@@ -115,10 +115,13 @@ function K = refine_batch (x, G, W, M, tol, nmax, first, last, K)
     E(! M) = 0;
     E = reshape (max (E, [], 2), n, B);
     E(K) = 0;
-    ## split every interval whose error exceeds TOL at its worst point
+    ## split the intervals whose error exceeds TOL and is within a factor 2
+    ## of the table's worst, at their worst point: the worst go first, as
+    ## one at a time, and the result once under TOL is the same
     key = prev + n * (0:B-1);                  # interval = its left entry
     emax = accumarray (key(:), E(:), [n*B 1], @max);
-    cand = find (E > tol & E >= reshape (emax(key), n, B));
+    bar = max (tol, 0.5 * max (E, [], 1));
+    cand = find (E > tol & E >= bar & E >= reshape (emax(key), n, B));
     if (isempty (cand))
       break;
     endif
