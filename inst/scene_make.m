@@ -145,8 +145,12 @@ function scene = scene_make (name, varargin)
                  make_obj("sphere", "center", [0.3 1 -1], "radius", 1), ...
                  make_obj("sphere", "center", [1.7 0.5 0.5], "radius", 0.5), ...
                  make_obj("sphere", "center", [-0.1 0.35 1.2], "radius", 0.35)];
-      eye = [0 3.5 8];
       target = [0 0.5 0];
+      eye = [0 3.5 8];
+      if (strcmp (opt.camera, "orthographic"))
+        ## far back, so that the image plane stays above the ground plane
+        eye = target + 4 * (eye - target);
+      endif
       extent = max (3.6, 5.4 * aspect);
       ldir = [-1 1.6 0.9];
     case {"torus", "mesh"}
@@ -254,6 +258,11 @@ endfunction
 %! assert (c(:,2), [s.objects(2:end).radius]', 1e-15);
 %! ## the whole row of spheres fits the (narrow) width
 %! assert (s.camera.extent * s.width / s.height >= 2 * 2.2);
+%! ## every orthographic camera ray starts above the ground and meets it
+%! f = s.camera.target - s.camera.eye; f /= norm (f);
+%! up = cross (cross (f, s.camera.up), f); up /= norm (up);
+%! assert (s.camera.eye(2) - s.camera.extent / 2 * abs (up(2)) > 0);
+%! assert (f(2) < 0);
 
 %!test
 %! s = scene_make ("torus", "resolution", [16 8], "size", [20 30]);
