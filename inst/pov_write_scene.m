@@ -31,34 +31,52 @@
 ## spheres-on-a-plane scene would lose its cast shadows.)
 ##
 ## A Lafortune @var{material} gets one table per term: the diffuse term and
-## each lobe, summed by an @code{average} pigment and @code{diffuse}
-## @var{k} for @var{k} tables.  Each table has its own entries, placed where its term
-## bends (see @qcode{"knots"}), so a sharp lobe (exponents in the thousands)
-## gets its entries around its peak and a broad one a few.  A MERL
-## @var{material} gets one table.
+## each lobe, summed by an @code{average} pigment and @code{diffuse} @var{k}
+## for @var{k} tables.  A MERL @var{material} gets one table.
+##
+## @strong{Where the entries go.}  Each table has its own entries, placed
+## where its term bends, so a sharp lobe (exponents in the thousands) gets
+## them around its peak and the diffuse term two per map.  The term is first
+## tabulated densely (@qcode{"dense"} points per axis) on grids that are
+## themselves refined twice toward where it bends (density proportional to
+## the square root of the second derivative, plus an even share); the outer
+## entries are then chosen from the dense ti by greedy refinement of the
+## largest error of linear interpolation (weighted by cos ti, as the image
+## is), and each inner map's entries likewise, independently, from the dense
+## to.  The error allowed, @qcode{"table_tol"} times the largest radiance, is
+## shared between the tables in proportion to their size (flat tables need
+## none) and split equally between the two levels; a map never has more than
+## @qcode{"entries"} entries, so very sharp lobes may stop short of it.
+## Where no normal reaches (|ti - to| > gamma or ti + to < gamma, gamma the
+## angle between L and V), @code{scene_slice} clamps to the nearest reachable
+## configuration, which leaves a crease along the boundary (the specular
+## peak lies on it); the tables instead continue each row linearly (in to)
+## from the boundary, so that interpolation across it stays second-order
+## accurate.
 ##
 ## @strong{What is left out.}  A lobe whose largest radiance anywhere the
 ## view reaches is below @qcode{"lobe_tol"} times the largest radiance of
 ## the whole material there is dropped.  The tables cover only the angles
-## that visible, lit surfaces reach (outer table: the range of ti; each inner
-## table: the range of to met near its ti), found by casting rays at every
-## pixel centre, corner and edge midpoint, padded by @qcode{"pad"};
-## beyond its ends a @code{pigment_map} repeats its end entry.  Objects that
-## are neither in the view nor able to cast a shadow on what is seen are
-## left out, and so are such mesh faces (conservative bounding-box tests).
+## that visible, lit surfaces reach (outer map: the range of ti; each inner
+## map: the range of to met near its ti), found by casting rays at every
+## pixel centre, corner and edge midpoint (mesh vertices standing in for
+## meshes), padded by @qcode{"pad"}; beyond its ends a @code{pigment_map}
+## repeats its end entry.  Objects that are neither in the view nor able to
+## cast a shadow on what is seen are left out, and so are such mesh faces
+## (conservative bounding-box tests).
 ##
 ## Options:
 ## @table @asis
 ## @item @qcode{"entries"} (256)
 ## Largest number of entries in each map, 2 to 256 (POV-Ray's limit).
 ## @item @qcode{"knots"} (@qcode{"adaptive"})
-## @qcode{"adaptive"}: refine each table where its linear interpolation
-## errs most, until the error is at most @qcode{"table_tol"} or the table
-## is full; @qcode{"uniform"}: @qcode{"entries"} evenly spaced entries.
-## @item @qcode{"table_tol"} (1e-4)
-## Interpolation error allowed, relative to the largest radiance in the view,
-## shared between the tables and between their two levels.  0: use all
-## @qcode{"entries"}.
+## @qcode{"adaptive"}: as above; @qcode{"uniform"}: @qcode{"entries"}
+## evenly spaced entries in every map (for comparison).
+## @item @qcode{"table_tol"} (1e-3)
+## Interpolation error allowed, relative to the largest radiance in the view
+## (see above).  0: fill every map to @qcode{"entries"}.  POV-Ray's OpenEXR
+## output is half float (relative rounding 2.4e-4), so much less gains
+## nothing.
 ## @item @qcode{"lobe_tol"} (1e-4)
 ## Lobes contributing less than this fraction of the largest radiance are
 ## dropped; 0 keeps every lobe.
@@ -70,9 +88,8 @@
 ## @item @qcode{"pad"} (0.02)
 ## Margin in radians added around the reached angles.
 ## @item @qcode{"dense"} (0: automatic)
-## Samples per axis of the dense tabulation the entries are chosen from;
-## automatic is 4 @qcode{"entries"} + 1, more (up to 2049) for lobes
-## narrower than that grid resolves.
+## Points per axis of the dense tabulation the entries are chosen from;
+## automatic is max (257, 2 @qcode{"entries"} + 1).
 ## @end table
 ##
 ## The file is written to a temporary file next to @var{file} and renamed.
@@ -85,14 +102,16 @@
 ## @code{time} (seconds).
 ##
 ## Only a directional light with an orthographic camera is supported; other
-## scenes give the error @code{lafortune:povUnsupported}.
+## scenes give the error @code{lafortune:povUnsupported} (with a perspective
+## camera or a point light the angle between L and V changes over the
+## surfaces, a third table dimension; @code{rt_render} renders them).
 ##
 ## @example
 ## @group
 ## scene = scene_make ("sphere");
 ## m = struct ("rho_d", [0.1 0.1 0.1], "Cxy", [-1 -1 -1], "Cz", [1 1 1], "e", [30 30 30]);
-## info = pov_write_scene (scene, m, "sphere.pov", "entries", 64);
-## system ("povray +Isphere.pov +Osphere.exr +FE -D File_Gamma=1.0");
+## info = pov_write_scene (scene, m, "sphere.pov");
+## system ("povray +Isphere.pov +Osphere.exr +FE +W256 +H256 -A -D File_Gamma=1.0");
 ## @end group
 ## @end example
 ## @seealso{pov_render, scene_slice, rt_render, scene_make}
@@ -118,7 +137,7 @@ function info = pov_write_scene (scene, material, file, varargin)
   light = scene.light;
   if (! strcmp (light.type, "directional") || ! strcmp (cam.type, "orthographic"))
     error ("lafortune:povUnsupported",
-           "%s: only a directional light with an orthographic camera is supported, got a %s light and a %s camera",
+           "%s: the tables need a directional light and an orthographic camera (then the shading depends on angle (N, L) and angle (N, V) only), got a %s light and a %s camera; rt_render renders the others",
            fname, light.type, cam.type);
   endif
   if (! ischar (file) || isempty (file))
@@ -215,7 +234,6 @@ function info = pov_write_scene (scene, material, file, varargin)
   ## entries of each kept table; the error allowed is shared between the
   ## tables that are not flat (flat ones are exact), by their size, and
   ## between the two levels
-  nk = nnz (kept);
   flat = cellfun (@(d) d.flat, D);
   share = contrib .* kept .* ! flat;
   share /= max (sum (share), realmin);
