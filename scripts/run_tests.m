@@ -92,7 +92,11 @@ endfor
 for k = 1:numel (bad)
   printf ("\n---- failures in %s ----\n", bad{k}{1});
   lines = strsplit (bad{k}{2}, "\n");
-  printf ("%s\n", strjoin (lines(1:min (80, end)), "\n"));
+  if (numel (lines) > 100)
+    ## the failing block's message is at its end
+    lines = [lines(1:30), {sprintf("[... %d lines ...]", numel (lines) - 90)}, lines(end-59:end)];
+  endif
+  printf ("%s\n", strjoin (lines, "\n"));
 endfor
 confirm_recursive_rmdir (false);
 rmdir (scratch, "s");
