@@ -3,6 +3,7 @@
 
 ## -*- texinfo -*-
 ## @deftypefn  {lafortune} {@var{R} =} scene_slice (@var{scene}, @var{material}, @var{ti}, @var{to})
+## @deftypefnx {lafortune} {@var{R} =} scene_slice (@var{scene}, @var{material}, @var{ti}, @var{to}, "pairs")
 ## @deftypefnx {lafortune} {[@var{R}, @var{gamma}] =} scene_slice (@dots{})
 ## Tabulate the 2-D slice of a material that a scene uses: radiance against
 ## the angles between the normal and the light and the normal and the viewer.
@@ -17,7 +18,9 @@
 ## numel(ti) x numel(to) x 3.  Combinations no normal can reach (outside
 ## |ti - to| <= gamma <= ti + to) are filled by clamping cos phi to [-1, 1],
 ## i.e. with the nearest reachable configuration, so the table interpolates
-## smoothly.  Where ti >= pi/2 or to >= pi/2 the radiance is 0.
+## smoothly.  Where ti >= pi/2 or to >= pi/2 the radiance is 0.  With
+## @code{"pairs"}, @var{ti} and @var{to} have the same length and @var{R} is
+## numel(ti) x 3, one row per pair (ti(k), to(k)): no tensor grid.
 ##
 ## @var{material} is a Lafortune model or a MERL material (see
 ## @code{material_eval}).  This is the one tabulation both renderers use
@@ -36,9 +39,16 @@
 ## @end example
 ## @seealso{rt_render, pov_write_scene, material_eval}
 ## @end deftypefn
-function [R, gamma] = scene_slice (scene, material, ti, to)
-  if (nargin != 4)
+function [R, gamma] = scene_slice (scene, material, ti, to, mode)
+  if (nargin != 4 && nargin != 5)
     print_usage ();
+  endif
+  pairs = false;
+  if (nargin == 5)
+    if (! ischar (mode) || ! strcmp (mode, "pairs"))
+      error ("lafortune:badOption", "scene_slice: the fifth argument may only be \"pairs\"");
+    endif
+    pairs = true;
   endif
   [L, V, E] = slice_geometry (scene);
   if (! isnumeric (ti) || ! isnumeric (to) || ! isreal (ti) || ! isreal (to)
@@ -51,11 +61,18 @@ function [R, gamma] = scene_slice (scene, material, ti, to)
            class (material));
   endif
   ti = double (ti(:));
-  to = double (to(:))';
+  to = double (to(:));
   cg = min (max (L * V', -1), 1);
   gamma = acos (cg);
-  [TI, TO] = ndgrid (ti, to);
-  TI = TI(:); TO = TO(:);
+  if (pairs)
+    if (numel (ti) != numel (to))
+      error ("lafortune:badInput", "scene_slice: with \"pairs\", TI and TO must have the same length");
+    endif
+    TI = ti; TO = to;
+  else
+    [TI, TO] = ndgrid (ti, to);
+    TI = TI(:); TO = TO(:);
+  endif
   s = sin (TI) .* sin (TO);
   cphi = (cg - cos (TI) .* cos (TO)) ./ s;
   cphi(s <= 0) = 1;
@@ -70,7 +87,11 @@ function [R, gamma] = scene_slice (scene, material, ti, to)
     f(ok,:) = material_eval (material, wi(ok,:), wo(ok,:));
   endif
   f .*= max (cos (TI), 0) .* E;
-  R = reshape (f, numel (ti), numel (to), 3);
+  if (pairs)
+    R = f;
+  else
+    R = reshape (f, numel (ti), numel (to), 3);
+  endif
 endfunction
 
 function [L, V, E] = slice_geometry (scene)
@@ -125,6 +146,19 @@ endfunction
 %! m = struct ("rho_d", [1 1 1], "Cxy", zeros (0, 3), "Cz", zeros (0, 3), "e", zeros (0, 3));
 %! R = scene_slice (__scene ([0 0 1], [0 0 1]), m, [0 pi/2 2], [0 1.6]);
 %! assert (R(:,:,1), [2/pi 0; 0 0; 0 0], 1e-15);   # E = 2
+
+%!test
+%! ## pairs: the diagonal of the tensor grid
+%! m = struct ("rho_d", [0.1 0.1 0.1], "Cxy", [-1 -0.8 -0.5], "Cz", [1 0.9 0.7], "e", [30 10 3]);
+%! s = __scene ([0.3 0.5 0.8] / norm ([0.3 0.5 0.8]), [0 0 1]);
+%! t = linspace (0.1, 1.4, 5);
+%! u = linspace (0.2, 1.2, 5);
+%! R = scene_slice (s, m, t, u);
+%! P = scene_slice (s, m, t, u, "pairs");
+%! assert (size (P), [5 3]);
+%! for k = 1:5
+%!   assert (P(k,:), squeeze (R(k,k,:))', 1e-15);
+%! endfor
 
 %!error <Invalid call> scene_slice (1, 2, 3)
 %!error id=lafortune:badScene scene_slice (1, 2, 3, 4)
