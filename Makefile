@@ -70,11 +70,13 @@ else
 RESULTS ?= results
 endif
 MESH ?=
-export RESULTS MERL_DIR QUICK MESH
+SCENE ?= sphere
+export RESULTS MERL_DIR QUICK MESH SCENE
 MATS := green-metallic-paint red-plastic
 R := $(RESULTS)
 # a change to the toolbox's code makes every step out of date
-CODE := $(wildcard inst/*.m inst/private/*.m src/*.cc) scripts/repro_config.m scripts/repro_scene.m
+CODE := $(wildcard inst/*.m inst/private/*.m src/*.cc) scripts/repro_config.m scripts/repro_scene.m \
+  $(R)/settings.json
 octrun = $(OCT) --path $(CURDIR)/inst --path $(CURDIR)/src --path $(CURDIR)/scripts \
   --eval 'warning ("off", "Octave:shadowed-function"); pkg load optim; $(1)'
 OUTPUTS := $(R)/report.md $(R)/summary.json
@@ -86,6 +88,9 @@ reproduce: deps
 
 .PHONY: FORCE
 FORCE:
+
+$(R)/settings.json: FORCE
+	@$(call octrun,repro_settings ())
 
 $(R)/data/%.binary: FORCE
 	@$(call octrun,repro_data ("$*"))

@@ -5,13 +5,16 @@
 ## @deftypefn {} {@var{c} =} repro_config ()
 ## Settings of `make reproduce`, from the environment that the Makefile sets:
 ## RESULTS (output folder), MERL_DIR (real MERL files), QUICK (1: classroom
-## run under a minute), MESH (optional PLY/OBJ file, e.g. the Happy Buddha).
+## run under a minute), SCENE (built-in scene: sphere, the default, spheres
+## or torus) and MESH (a PLY/OBJ file, e.g. the Happy Buddha, which then
+## replaces the built-in scene).
 ## @end deftypefn
 function c = repro_config ()
   c.results = getenv_default ("RESULTS", "results");
   c.merl_dir = getenv_default ("MERL_DIR", "data/merl");
   c.quick = str2double (getenv_default ("QUICK", "0")) == 1;
   c.mesh = getenv_default ("MESH", "");
+  c.scene = getenv_default ("SCENE", "sphere");
   c.materials = {"green-metallic-paint", "red-plastic"};
   c.lobes = 1:3;
   c.max_angle = 80;             # grazing angles beyond this are left out

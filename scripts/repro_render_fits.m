@@ -38,8 +38,12 @@ function repro_render_fits (material)
         r.rt_time = rinfo.time_total;
       endif
       R.(mth)(k) = r;
-      printf ("reproduce: [%s] %s %d lobe(s): PSNR %.2f dB (POV-Ray, %.1f s), %.2f dB (rt_render, %.1f s)\n",
-              material, mth, k, r.psnr_pov, r.pov_time, r.psnr_rt, r.rt_time);
+      printf ("reproduce: [%s] %s %d lobe(s): PSNR %.2f dB (POV-Ray, %.1f s)", material, mth, k,
+              r.psnr_pov, r.pov_time);
+      if (! isnan (r.psnr_rt))
+        printf (", %.2f dB (rt_render, %.1f s)", r.psnr_rt, r.rt_time);
+      endif
+      printf ("\n");
     endfor
   endfor
   repro_save (fullfile (rd, [material "-fits.json"]), R);

@@ -203,7 +203,7 @@ endfunction
 
 function s = scene_desc (c)
   if (isempty (c.mesh))
-    s = "the built-in torus mesh; give MESH=happy_vrip.ply for the paper's Happy Buddha";
+    s = sprintf ("the built-in scene '%s'; give MESH=happy_vrip.ply for the paper's Happy Buddha", c.scene);
   else
     s = c.mesh;
   endif

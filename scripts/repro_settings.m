@@ -1,0 +1,20 @@
+## Copyright (C) 2026 The lafortune developers
+## SPDX-License-Identifier: GPL-3.0-or-later
+
+## -*- texinfo -*-
+## @deftypefn {} {} repro_settings ()
+## Step 0 of `make reproduce`: RESULTS/settings.json, the settings every
+## later step depends on (scene, sizes, samples, data folder).  Rewritten only
+## when they change, so that Make redoes exactly the steps they affect.
+## @end deftypefn
+function repro_settings ()
+  c = repro_config ();
+  s = rmfield (c, "results");
+  txt = jsonencode (s);
+  f = fullfile (c.results, "settings.json");
+  if (exist (f, "file") && strcmp (fileread (f), txt))
+    return;
+  endif
+  printf ("reproduce: settings: %s\n", txt);
+  repro_save (f, txt);
+endfunction
