@@ -53,7 +53,7 @@ function lafortune_export (model, file, format)
   formats = {"json", "text", "brdfexplorer", "merl"};
   if (! ischar (format) || ! any (strcmpi (format, formats)))
     error ("lafortune:badFormat", "lafortune_export: unknown FORMAT '%s'; expected one of %s",
-           disp_str (format), strjoin (formats, ", "));
+           arg_str (format), strjoin (formats, ", "));
   endif
   format = lower (format);
   if (strcmp (format, "merl"))
@@ -68,29 +68,7 @@ function lafortune_export (model, file, format)
     case "brdfexplorer"
       txt = brdf_text (model, name);
   endswitch
-  tmp = atomic_tmp (file, "lafortune_export");
-  ok = false;
-  unwind_protect
-    fid = fopen (tmp, "w");
-    cnt = fputs (fid, txt);
-    if (fclose (fid) != 0 || cnt != 0)
-      error ("lafortune:unwritable", "lafortune_export: writing '%s' failed", file);
-    endif
-    atomic_commit (tmp, file, "lafortune_export");
-    ok = true;
-  unwind_protect_cleanup
-    if (! ok && exist (tmp, "file"))
-      unlink (tmp);
-    endif
-  end_unwind_protect
-endfunction
-
-function s = disp_str (x)
-  if (ischar (x))
-    s = x;
-  else
-    s = class (x);
-  endif
+  atomic_write (file, "lafortune_export", @(fid) fputs (fid, txt) == 0);
 endfunction
 
 function txt = json_text (m, name)

@@ -40,20 +40,12 @@ function brdf = merl_standin (name, varargin)
   if (! ischar (name) || ! any (strcmp (name, names)))
     error ("lafortune:unknownMaterial",
            "merl_standin: unknown material '%s'; built-in stand-ins: %s",
-           disp_name (name), strjoin (names, ", "));
+           arg_str (name), strjoin (names, ", "));
   endif
   opt = parse_opts (varargin, "merl_standin", struct ("noise", 0.03, "missing", 80, "seed", 1));
   p = P.(strrep (name, "-", "_"));
   brdf = merl_synth (@(wi, wo) cook_torrance (p, wi, wo), "name", [name " (stand-in)"],
                      "noise", opt.noise, "missing", opt.missing, "seed", opt.seed);
-endfunction
-
-function s = disp_name (x)
-  if (ischar (x))
-    s = x;
-  else
-    s = class (x);
-  endif
 endfunction
 
 %!test

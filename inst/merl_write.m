@@ -48,22 +48,9 @@ function merl_write (file, brdf)
     endfor
     stored(:,c) = s;
   endfor
-  tmp = atomic_tmp (file, "merl_write");
-  ok = false;
-  unwind_protect
-    fid = fopen (tmp, "w", "ieee-le");
-    c1 = fwrite (fid, dims, "int32");
-    c2 = fwrite (fid, stored(:), "float64");
-    if (fclose (fid) != 0 || c1 != 3 || c2 != 3 * n)
-      error ("lafortune:unwritable", "merl_write: writing '%s' failed (disk full?)", file);
-    endif
-    atomic_commit (tmp, file, "merl_write");
-    ok = true;
-  unwind_protect_cleanup
-    if (! ok && exist (tmp, "file"))
-      unlink (tmp);
-    endif
-  end_unwind_protect
+  atomic_write (file, "merl_write",
+                @(fid) fwrite (fid, dims, "int32") == 3 && fwrite (fid, stored(:), "float64") == 3 * n,
+                "ieee-le");
 endfunction
 
 %!test

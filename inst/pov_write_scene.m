@@ -267,33 +267,10 @@ function info = pov_write_scene (scene, material, file, varargin)
   endfor
 
   ## write
-  tmp = atomic_tmp (file, fname);
-  ok = false;
-  unwind_protect
-    fid = fopen (tmp, "w");
-    if (fid < 0)
-      error ("lafortune:unwritable", "%s: cannot write '%s'", fname, tmp);
-    endif
-    unwind_protect
-      fputs (fid, header_sdl (scene, material, opt, tabs, rng_i, rng_o, peak));
-      fputs (fid, camera_sdl (cam, scene));
-      fputs (fid, light_sdl (scene, L, cam));
-      for q = 1:numel (body)
-        fputs (fid, body{q});
-      endfor
-      fputs (fid, texture_sdl (find (kept)));
-      [osdl, nfd] = objects_sdl (scene.objects, keep, faces);
-      fputs (fid, osdl);
-    unwind_protect_cleanup
-      fclose (fid);
-    end_unwind_protect
-    atomic_commit (tmp, file, fname);
-    ok = true;
-  unwind_protect_cleanup
-    if (! ok && exist (tmp, "file"))
-      unlink (tmp);
-    endif
-  end_unwind_protect
+  [osdl, nfd] = objects_sdl (scene.objects, keep, faces);
+  parts = [{header_sdl(scene, material, opt, tabs, rng_i, rng_o, peak), camera_sdl(cam, scene), ...
+            light_sdl(scene, L, cam)}, body, {texture_sdl(find (kept)), osdl}];
+  atomic_write (file, fname, @(fid) all (cellfun (@(t) fputs (fid, t), parts) == 0));
   d = dir (file);
   info = struct ("file", file, "bytes", d.bytes, "terms", tabs,
                  "entries", sum ([tabs.outer]) + sum ([tabs.inner]),

@@ -77,7 +77,7 @@ function repro_figures ()
     F = jsondecode (fileread (fullfile (c.results, "fit", [mat ".json"])));
     subplot (1, numel (c.materials), i);
     for ch = 1:3
-      T = trace_of (F.inplane.trace, ch);
+      T = repro_trace (F.inplane.trace, ch);
       loglog (max (T(:,1), 1e-3), T(:,2), "linewidth", 1.5);
       hold on;
     endfor
@@ -103,14 +103,6 @@ function repro_figures ()
   title ("measured data, rt_render: PSNR against run time (labels: samples per pixel)", "interpreter", "none");
   legend (c.materials, "location", "southeast");
   save_png (h, fullfile (fd, "spp.png"));
-endfunction
-
-function T = trace_of (tr, ch)
-  if (iscell (tr))
-    T = tr{ch};
-  else
-    T = squeeze (tr(ch,:,:));
-  endif
 endfunction
 
 function show (rgb, ttl)

@@ -142,7 +142,7 @@ function repro_report ()
     mat = c.materials{i};
     F = D.(fieldname (mat)).F;
     for ch = 1:3
-      T = trace_of (F.inplane.trace, ch);
+      T = repro_trace (F.inplane.trace, ch);
       fin = T(end,2);
       t10 = T(find (T(:,2) <= 1.1 * fin, 1), 1);
       t1 = T(find (T(:,2) <= 1.01 * fin, 1), 1);
@@ -206,13 +206,5 @@ function s = scene_desc (c)
     s = sprintf ("the built-in scene '%s'; give MESH=happy_vrip.ply for the paper's Happy Buddha", c.scene);
   else
     s = c.mesh;
-  endif
-endfunction
-
-function T = trace_of (tr, ch)
-  if (iscell (tr))
-    T = tr{ch};
-  else
-    T = squeeze (tr(ch,:,:));
   endif
 endfunction
