@@ -9,6 +9,9 @@
 ## The incident direction is wi = (sin ti, 0, cos ti) with ti >= 0 and the
 ## outgoing direction wo = (sin to, 0, cos to) with to on both sides of the
 ## normal: to < 0 is the far side, where to = -ti is the mirror direction.
+## The vectors are built from the angles as MERL's reference reader builds
+## them (phi_in = 0, phi_out = pi on the far side), so a table at whole
+## degrees, whose samples lie on bin edges, gets the reader's bins.
 ## Grazing angles are left out (the measurements are noisy there) and
 ## invalid (missing) samples are dropped.  Options:
 ##
@@ -61,8 +64,13 @@ function S = merl_plane (brdf, varargin)
   to = [-fliplr(opt.step:opt.step:opt.max_angle), 0:opt.step:opt.max_angle];
   [TI, TO] = ndgrid (ti(:), to(:));
   TI = TI(:); TO = TO(:);
-  wi = [sind(TI), zeros(size (TI)), cosd(TI)];
-  wo = [sind(TO), zeros(size (TO)), cosd(TO)];
+  ## directions built from angles as the reference reader builds them
+  ## (phi_in = 0, phi_out = pi on the far side)
+  ti_r = TI * pi / 180;
+  to_r = abs (TO) * pi / 180;
+  fo = pi * (TO < 0);
+  wi = [sin(ti_r) .* cos(0), sin(ti_r) .* sin(0), cos(ti_r)];
+  wo = [sin(to_r) .* cos(fo), sin(to_r) .* sin(fo), cos(to_r)];
   [rgb, ok] = merl_eval (brdf, wi, wo, opt.method);
   name = "";
   if (isfield (brdf, "name"))
