@@ -68,7 +68,7 @@ function lafortune_export (model, file, format)
     case "brdfexplorer"
       txt = brdf_text (model, name);
   endswitch
-  atomic_write (file, "lafortune_export", @(fid) fputs (fid, txt) == 0);
+  atomic_write (file, "lafortune_export", @(fid) write_text (fid, txt));
 endfunction
 
 function txt = json_text (m, name)
@@ -176,16 +176,22 @@ endfunction
 %! assert (merl_eval (b, wi, wo), lafortune_eval (m, wi, wo), -0.05);
 
 %!test
-%! ## a failed export keeps the earlier file and leaves no temporary
+%! ## an export whose write fails (a file size limit of 0 makes the disk
+%! ## refuse) keeps the earlier file and leaves no temporary
 %! f = fullfile (d, "keep.json");
 %! lafortune_export (m, f, "json");
 %! before = fileread (f);
-%! bad = m; bad.e(1) = -1;
-%! try
-%!   lafortune_export (bad, f, "json");
-%! catch
-%! end_try_catch
+%! scr = fullfile (d, "w.m");
+%! fid = fopen (scr, "w");
+%! fprintf (fid, "addpath ('%s');\n", fileparts (which ("lafortune_export")));
+%! fprintf (fid, "m = struct ('rho_d', [1 1 1], 'Cxy', [1 1 1], 'Cz', [1 1 1], 'e', [2 2 2]);\n");
+%! fprintf (fid, "try\n lafortune_export (m, '%s', 'json');\n exit (3);\ncatch err\n disp (err.identifier);\nend_try_catch\n", f);
+%! fclose (fid);
+%! [st, out] = system (sprintf ("bash -c \"trap '' XFSZ; ulimit -f 0; octave-cli --no-gui --norc --no-history '%s'\" 2>&1", scr));
+%! assert (st, 0, out);
+%! assert (! isempty (strfind (out, "lafortune:unwritable")), out);
 %! assert (fileread (f), before);
+%! unlink (scr);
 %! assert (isempty (dir (fullfile (d, ".keep*"))));
 
 %!error <Invalid call> lafortune_export (m, "x.json")

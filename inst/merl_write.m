@@ -49,7 +49,7 @@ function merl_write (file, brdf)
     stored(:,c) = s;
   endfor
   atomic_write (file, "merl_write",
-                @(fid) fwrite (fid, dims, "int32") == 3 && fwrite (fid, stored(:), "float64") == 3 * n,
+                @(fid) 4 * fwrite (fid, dims, "int32") + 8 * fwrite (fid, stored(:), "float64"),
                 "ieee-le");
 endfunction
 
@@ -66,14 +66,20 @@ endfunction
 %! merl_write (f, r);
 %! r1 = merl_read (f);
 %! assert (isequal (r1.data, r.data));
-%! ## a failed write leaves the old file as it was and no temporary behind
-%! bad = b; bad.data(5) = NaN;
-%! try
-%!   merl_write (f, bad);
-%! catch
-%! end_try_catch
-%! r2 = merl_read (f);
-%! assert (isequal (r2.data, r.data));
+%! ## a write that fails half-way (a file size limit makes the disk refuse)
+%! ## leaves the old file as it was and no temporary behind
+%! before = hash ("md5", fileread (f));
+%! scr = fullfile (d, "w.m");
+%! fid = fopen (scr, "w");
+%! fprintf (fid, "addpath ('%s');\n", fileparts (which ("merl_write")));
+%! fprintf (fid, "b = merl_synth (@(wi, wo) ones (rows (wi), 3));\n");
+%! fprintf (fid, "try\n merl_write ('%s', b);\n exit (3);\ncatch err\n disp (err.identifier);\nend_try_catch\n", f);
+%! fclose (fid);
+%! [st, out] = system (sprintf ("bash -c \"trap '' XFSZ; ulimit -f 1000; octave-cli --no-gui --norc --no-history '%s'\" 2>&1", scr));
+%! assert (st, 0, out);
+%! assert (! isempty (strfind (out, "lafortune:unwritable")), out);
+%! assert (hash ("md5", fileread (f)), before);
+%! unlink (scr);
 %! assert (numel (dir (d)), 3);   # ., .. and x.binary
 %! assert (strncmp (d, tempdir (), numel (tempdir ())));   # only our scratch folder
 %! confirm_recursive_rmdir (false, "local");

@@ -270,7 +270,7 @@ function info = pov_write_scene (scene, material, file, varargin)
   [osdl, nfd] = objects_sdl (scene.objects, keep, faces);
   parts = [{header_sdl(scene, material, opt, tabs, rng_i, rng_o, peak), camera_sdl(cam, scene), ...
             light_sdl(scene, L, cam)}, body, {texture_sdl(find (kept)), osdl}];
-  atomic_write (file, fname, @(fid) all (cellfun (@(t) fputs (fid, t), parts) == 0));
+  atomic_write (file, fname, @(fid) write_text (fid, parts));
   d = dir (file);
   info = struct ("file", file, "bytes", d.bytes, "terms", tabs,
                  "entries", sum ([tabs.outer]) + sum ([tabs.inner]),

@@ -22,9 +22,12 @@ function repro_save (file, value)
   if (fid < 0)
     error ("lafortune:unwritable", "repro_save: cannot write '%s'", tmp);
   endif
-  fputs (fid, txt);
-  if (fclose (fid) != 0)
-    error ("lafortune:unwritable", "repro_save: writing '%s' failed", tmp);
+  bad = fputs (fid, txt) != 0;
+  bad |= fclose (fid) != 0;
+  ## Octave's fputs and fclose do not report a disk that refuses the data
+  if (bad || stat (tmp).size != numel (txt))
+    unlink (tmp);
+    error ("lafortune:unwritable", "repro_save: writing '%s' failed (disk full?)", tmp);
   endif
   [err, msg] = rename (tmp, file);
   if (err)

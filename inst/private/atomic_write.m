@@ -5,11 +5,14 @@
 ## @deftypefn {} {} atomic_write (@var{file}, @var{fname}, @var{writer})
 ## @deftypefnx {} {} atomic_write (@var{file}, @var{fname}, @var{writer}, @var{arch})
 ## Write @var{file} through a temporary file in its folder and a rename
-## (private).  @var{writer} is called as @code{ok = writer (fid)} and returns
-## true when everything was written; @var{arch} is fopen's byte order
-## (default "native").  On any failure the temporary file is removed, an
-## earlier @var{file} is left as it was, and the error is
-## @code{lafortune:unwritable} (or the writer's own).
+## (private).  @var{writer} is called as @code{nbytes = writer (fid)} and
+## returns the number of bytes it wrote (negative when it saw a failure);
+## @var{arch} is fopen's byte order (default "native").  The temporary file
+## must have exactly that size before it is renamed: Octave's fwrite, fputs
+## and fclose do not report a disk that refuses the data (full, or over a
+## size limit).  On any failure the temporary file is removed, an earlier
+## @var{file} is left as it was, and the error is @code{lafortune:unwritable}
+## (or the writer's own).
 ## @end deftypefn
 function atomic_write (file, fname, writer, arch = "native")
   tmp = atomic_tmp (file, fname);
@@ -20,13 +23,16 @@ function atomic_write (file, fname, writer, arch = "native")
       error ("lafortune:unwritable", "%s: cannot write '%s'", fname, tmp);
     endif
     try
-      good = writer (fid);
+      nbytes = writer (fid);
     catch err
       fclose (fid);
       rethrow (err);
     end_try_catch
-    if (fclose (fid) != 0 || ! good)
-      error ("lafortune:unwritable", "%s: writing '%s' failed (disk full?)", fname, file);
+    st = fclose (fid);
+    [info, err] = stat (tmp);
+    if (st != 0 || nbytes < 0 || err != 0 || info.size != nbytes)
+      error ("lafortune:unwritable", "%s: writing '%s' failed (disk full or a file size limit?)",
+             fname, file);
     endif
     atomic_commit (tmp, file, fname);
     ok = true;
