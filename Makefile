@@ -25,18 +25,26 @@ DEB_PACKAGES := octave octave-optim liboctave-dev libopenexr-dev pkg-config povr
 all: dist
 
 deps:
-	@missing=""; \
-	for p in $(DEB_PACKAGES); do \
-	  dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" || missing="$$missing $$p"; \
-	done; \
-	if [ -z "$$missing" ]; then echo "deps: all Debian packages present"; exit 0; fi; \
-	if [ "$$(id -u)" = 0 ]; then \
-	  echo "deps: installing$$missing"; \
-	  apt-get update -q && DEBIAN_FRONTEND=noninteractive apt-get install -y -q $$missing; \
+	@if command -v dpkg-query >/dev/null 2>&1; then \
+	  missing=""; \
+	  for p in $(DEB_PACKAGES); do \
+	    dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" || missing="$$missing $$p"; \
+	  done; \
+	  if [ -z "$$missing" ]; then echo "deps: all Debian packages present"; \
+	  elif [ "$$(id -u)" = 0 ]; then \
+	    echo "deps: installing$$missing"; \
+	    apt-get update -q && DEBIAN_FRONTEND=noninteractive apt-get install -y -q $$missing || exit 1; \
+	  else \
+	    echo "deps: missing Debian packages:$$missing"; \
+	    echo "deps: run as root:  apt-get update && apt-get install -y$$missing"; \
+	    exit 1; \
+	  fi; \
 	else \
-	  echo "deps: missing Debian packages:$$missing"; \
-	  echo "deps: run as root:  apt-get update && apt-get install -y$$missing"; \
-	  exit 1; \
+	  miss=""; \
+	  for t in octave-cli mkoctfile povray gnuplot pkg-config; do command -v $$t >/dev/null 2>&1 || miss="$$miss $$t"; done; \
+	  pkg-config --exists OpenEXR 2>/dev/null || miss="$$miss OpenEXR(pkg-config)"; \
+	  if [ -n "$$miss" ]; then echo "deps: not a Debian system, and missing:$$miss (and the Octave package optim)"; exit 1; fi; \
+	  echo "deps: not a Debian system; octave-cli, mkoctfile, povray, gnuplot and OpenEXR found"; \
 	fi
 	@mkdir -p $(HOME)/.local/share/octave
 

@@ -12,10 +12,14 @@ here = fileparts (mfilename ("fullpath"));
 addpath (fullfile (here, "..", "inst"));
 warning ("off", "Octave:shadowed-function");
 warning ("off", "lafortune:notConverged");
-proxy = fullfile (here, "..", "..", "shared", "data", "merl-proxy", "green-metallic-paint.binary");
+pd = getenv ("MERL_PROXY_DIR");
+if (isempty (pd))
+  pd = fullfile (here, "..", "..", "shared", "data", "merl-proxy");
+endif
+proxy = fullfile (pd, "green-metallic-paint.binary");
 if (exist (proxy, "file"))
   brdf = merl_read (proxy);
-  src = "stand-in file ../shared/data/merl-proxy/green-metallic-paint.binary";
+  src = ["stand-in file " proxy];
 else
   brdf = merl_standin ("green-metallic-paint");
   src = "built-in Cook-Torrance stand-in (../shared absent)";

@@ -30,6 +30,11 @@ function model = check_model (model, fname)
     error ("lafortune:badModel", "%s: MODEL.rho_d must be 1 x 3 (R, G, B), got %s",
            fname, mat2str (size (model.rho_d)));
   endif
+  if (! isempty (model.Cxy) && columns (model.Cxy) != 3)
+    error ("lafortune:badModel",
+           "%s: MODEL.Cxy must be NLOBES x 3 (one column per channel R, G, B), got %s",
+           fname, mat2str (size (model.Cxy)));
+  endif
   n = rows (model.Cxy);
   if (isempty (model.Cxy) && isempty (model.Cz) && isempty (model.e))
     model.Cxy = model.Cz = model.e = zeros (0, 3);
