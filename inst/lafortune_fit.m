@@ -394,28 +394,24 @@ function ch = fit_channel (x, y, cosi, nlobes, opt)
       screen = opt;
       screen.max_iter = min (opt.screen_iter, opt.max_iter);
       it_sum = 0;
-      sobj = Inf;
       ntry = min (opt.tries, numel (order));
       if (ntry == 1)
-        ps = [p; cand(order(1),2:4)'];
+        starts = [p; cand(order(1),2:4)'];     # a single start needs no screening
+      else
+        starts = zeros (numel (p) + 3, ntry);
+        sobj = zeros (1, ntry);
+        for i = 1:ntry
+          [starts(:,i), it] = run_lm (Ds, [p; cand(order(i),2:4)'], screen, islog, dl);
+          it_sum += it;
+          sobj(i) = objective (Ds, lafortune_core (starts(:,i), Ds.x(:,1), Ds.x(:,2)), islog, dl);
+        endfor
+        ## the best screened start first
+        [~, so] = sort (sobj);
+        starts = starts(:,so);
       endif
-      starts = zeros (numel (p) + 3, 0);
-      sobj = [];
-      for j = order(1:ntry * (ntry > 1))'
-        p0 = [p; cand(j,2:4)'];
-        [pj, it] = run_lm (Ds, p0, screen, islog, dl);
-        it_sum += it;
-        starts(:,end+1) = pj;
-        sobj(end+1) = objective (Ds, lafortune_core (pj, Ds.x(:,1), Ds.x(:,2)), islog, dl);
-      endfor
-      if (ntry == 1)
-        starts = ps;
-        sobj = 0;
-      endif
-      ## the best screened start first; a result that explodes between the
-      ## samples is rejected and the next start tried
-      [~, so] = sort (sobj);
-      for ps = starts(:,so)
+      ## a result that explodes between the samples is rejected and the next
+      ## start tried
+      for ps = starts
         if (numel (sub) < m)
           [ps, it] = run_lm (Ds, ps, opt, islog, dl);
           it_sum += it;
