@@ -12,12 +12,9 @@ here = fileparts (mfilename ("fullpath"));
 addpath (fullfile (here, "..", "inst"));
 warning ("off", "Octave:shadowed-function");
 warning ("off", "lafortune:notConverged");
-pd = getenv ("MERL_PROXY_DIR");
-if (isempty (pd))
-  pd = fullfile (here, "..", "..", "shared", "data", "merl-proxy");
-endif
-proxy = fullfile (pd, "green-metallic-paint.binary");
-if (exist (proxy, "file"))
+addpath (here);
+proxy = bench_data ("green-metallic-paint");
+if (! isempty (proxy))
   brdf = merl_read (proxy);
   src = ["stand-in file " proxy];
 else

@@ -36,14 +36,11 @@ warning ("off", "Octave:shadowed-function");
 args = argv ();
 quick = ! isempty (args) && strcmp (args{end}, "quick");
 
-pd = getenv ("MERL_PROXY_DIR");
-if (isempty (pd))
-  pd = fullfile (here, "..", "..", "shared", "data", "merl-proxy");
-endif
-proxy = fullfile (pd, "green-metallic-paint.binary");
-if (exist (proxy, "file"))
+addpath (here);
+proxy = bench_data ("green-metallic-paint");
+if (! isempty (proxy))
   brdf = merl_read (proxy);
-  src = "stand-in file ../shared/data/merl-proxy/green-metallic-paint.binary";
+  src = ["stand-in file " proxy];
 else
   brdf = merl_synth (struct ("rho_d", [0.003 0.04 0.034], "Cxy", [-1 -1 -1], ...
                              "Cz", [0.95 0.95 0.95], "e", [60 60 60]), ...
