@@ -18,12 +18,18 @@
 ## @qcode{"cull"}, @qcode{"pad"}, @qcode{"dense"}):
 ## @table @asis
 ## @item @qcode{"antialias"} (0)
-## 0: one ray through each pixel centre (what @code{rt_render} does with
-## @qcode{"jitter"}, false; use this to compare the two).  @var{n} >= 2:
-## POV-Ray's anti-aliasing @code{+A0.0 +AM1 +R@var{n}}, which supersamples
-## every pixel that differs at all from its neighbours with @var{n} x
-## @var{n} rays; not the same samples as @code{rt_render}'s jittered
-## @code{spp}, so images agree only up to sampling noise.
+## false or 0: one ray through each pixel centre (what @code{rt_render}
+## does with @code{scene.jitter} false and @code{scene.spp} = 1; use this to
+## compare the two without sampling noise).  @var{n} >= 2: POV-Ray's
+## anti-aliasing @code{+A0.0 +AM1 +R@var{n}}, which supersamples every pixel
+## that differs at all from its neighbours with a regular @var{n} x @var{n}
+## grid of rays (the samples of @code{rt_render} with @code{scene.jitter}
+## false and @code{scene.spp} = @var{n}^2) and averages them together with
+## the first ray through the pixel centre: measured on the Happy Buddha, a
+## pixel is (c + @var{n}^2 g)/(@var{n}^2 + 1), c the centre sample and g the
+## grid's mean (66 to 72 dB against that for @var{n} = 2 to 4; 44 to 56 dB
+## against g alone).  Against jittered samples the images agree up to
+## sampling noise.
 ## @item @qcode{"jitter"} (false)
 ## With anti-aliasing, jitter the subsamples (@code{+J}).
 ## @item @qcode{"threads"} (0)
@@ -76,8 +82,11 @@ function [img, info] = pov_render (scene, material, varargin)
   opt = parse_opts (own, fname, struct ("antialias", 0, "jitter", false, "threads", 0,
                                         "keep", "", "povray", "povray"));
   aa = opt.antialias;
+  if (islogical (aa) && isscalar (aa) && ! aa)
+    aa = 0;                               # "antialias", false: one ray per pixel centre
+  endif
   if (! isscalar (aa) || ! isnumeric (aa) || aa != fix (aa) || aa < 0 || aa == 1 || aa > 9)
-    error ("lafortune:badOption", "%s: \"antialias\" must be 0 or an integer from 2 to 9", fname);
+    error ("lafortune:badOption", "%s: \"antialias\" must be false, 0 or an integer from 2 to 9", fname);
   endif
   th = opt.threads;
   if (! isscalar (th) || ! isnumeric (th) || th != fix (th) || th < 0)

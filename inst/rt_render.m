@@ -11,7 +11,7 @@
 ## @var{material} (a MERL struct from @code{merl_read}/@code{merl_synth} or a
 ## Lafortune model, else error @code{lafortune:badMaterial}).  @var{img} is
 ## the @code{scene.height} x @code{scene.width} x 3 linear HDR image:
-## the mean over @code{scene.spp} jittered primary rays per pixel of the
+## the mean over @code{scene.spp} primary rays per pixel of the
 ## radiance f(wi, wo) max(cos theta_i, 0) E, 0 where a shadow ray toward the
 ## light hits an object, @code{scene.background} where the ray hits nothing.
 ##
@@ -62,8 +62,20 @@
 ## light).
 ## @end table
 ##
-## Other options: @code{"jitter"} (default true; false puts every sample at
-## the pixel centre), @code{"progress"} (default true: on renders longer than
+## Samples: the @code{scene.spp} primary rays of a pixel are stratified,
+## one in each cell of an nx x ny grid over the pixel (nx ny = spp, as
+## square as spp allows), at a random place in its cell or, with
+## @code{scene.jitter} false (@code{scene_make} option @qcode{"jitter"}), at
+## the cell centre: one ray through the pixel centre for spp = 1, and for
+## spp = n^2 the regular n x n grid of POV-Ray's anti-aliasing
+## (@code{pov_render} option @qcode{"antialias"}, n, which averages it with
+## the centre ray), so that the two renderers can be compared without
+## sampling noise.  Stratified samples
+## converge much faster than independent ones where a pixel covers many
+## small facets (a 100k-triangle mesh at 256 x 512).
+##
+## Other options: @code{"jitter"} (default @code{scene.jitter}, else true:
+## overrides it), @code{"progress"} (default true: on renders longer than
 ## 2 s a line "rt_render: 42% done, 12 s left" is updated in place),
 ## @code{"chunk"} (rays traced at once, default 65536: bounds the memory).
 ## The jitter comes from @code{rand} seeded with @code{scene.seed} (the
@@ -96,7 +108,7 @@ function [img, info] = rt_render (scene, material, varargin)
     print_usage ();
   endif
   t_start = tic ();
-  check_scene (scene);
+  scene_check (scene, "rt_render");
   kind = material_kind (material);
   if (isempty (kind))
     error ("lafortune:badMaterial",
@@ -104,10 +116,13 @@ function [img, info] = rt_render (scene, material, varargin)
            class (material));
   endif
   opt = parse_opts (varargin, "rt_render",
-                    struct ("mode", "auto", "progress", true, "jitter", true,
+                    struct ("mode", "auto", "progress", true, "jitter", scene_jitter (scene),
                             "chunk", 65536, "slice_size", [128 64]));
   if (! ischar (opt.mode) || ! any (strcmp (opt.mode, {"auto", "slice", "direct"})))
     error ("lafortune:badOption", "rt_render: MODE must be \"auto\", \"slice\" or \"direct\"");
+  endif
+  if (! (isscalar (opt.jitter) && (islogical (opt.jitter) || isnumeric (opt.jitter))))
+    error ("lafortune:badOption", "rt_render: JITTER must be true or false");
   endif
   if (! (isscalar (opt.chunk) && opt.chunk >= 1))
     error ("lafortune:badOption", "rt_render: CHUNK must be a positive integer");
@@ -164,11 +179,9 @@ function [img, info] = rt_render (scene, material, varargin)
 
   lt = scene.light;
   E = double (lt.irradiance(:).') .* [1 1 1];
-  cam = scene.camera;
-  fwd = cam.target(:).' - cam.eye(:).';
-  fwd /= norm (fwd);
+  cam = scene_camera (scene);
   if (strcmp (mode, "slice"))
-    [Rm, sl] = slice_table (scene, material, n, -fwd);
+    [Rm, sl] = slice_table (scene, material, n, -cam.f);
     material_bytes = numel (Rm) * 4;
   else
     Rm = [];
@@ -196,13 +209,15 @@ function [img, info] = rt_render (scene, material, varargin)
     for k0 = 0:chunk:total-1
       m = min (chunk, total - k0);
       t0 = tic ();
-      pix = mod (k0 + (0:m-1).', npix) + 1;
+      k = k0 + (0:m-1).';
+      pix = mod (k, npix) + 1;
       if (opt.jitter)
         j = rand (m, 2);
       else
         j = 0.5 * ones (m, 2);
       endif
-      [O, D] = camera_rays (cam, H, W, pix, j);
+      [x, y] = pixel_samples (H, W, k, spp, j);
+      [O, D] = camera_rays (cam, x, y);
       hit = rt_intersect (objs, O, D, epsilon, Inf);
       h = find (hit.obj > 0);
       t_int += toc (t0);
@@ -210,7 +225,7 @@ function [img, info] = rt_render (scene, material, varargin)
       t0 = tic ();
       P = O(h,:) + hit.t(h) .* D(h,:);
       Vw = -D(h,:);
-      [Ng, Ns] = normals (objs, hit, h, P);
+      [Ng, Ns] = hit_normals (objs, hit, h, P);
       flip = sum (Ng .* Vw, 2) < 0;
       Ng(flip,:) = -Ng(flip,:);
       Ns(flip,:) = -Ns(flip,:);
@@ -308,79 +323,9 @@ function [img, info] = rt_render (scene, material, varargin)
   endif
 endfunction
 
-function check_scene (scene)
-  req = {"width", "height", "spp", "seed", "background", "camera", "light", "objects"};
-  if (! isstruct (scene) || ! isscalar (scene) || ! all (isfield (scene, req)))
-    error ("lafortune:badScene",
-           "rt_render: SCENE must be a scene struct from scene_make (fields %s)",
-           strjoin (req, ", "));
-  endif
-  if (isempty (scene.objects))
-    error ("lafortune:badScene", "rt_render: the scene has no objects");
-  endif
-endfunction
-
-## Camera rays through pixels PIX (linear, column-major H x W) at offsets J
-## (m x 2: x, y in [0, 1) within the pixel).
-function [O, D] = camera_rays (cam, H, W, pix, j)
-  eye = cam.eye(:).';
-  fwd = cam.target(:).' - eye;
-  fwd /= norm (fwd);
-  right = cross (fwd, cam.up(:).');
-  right /= norm (right);
-  up = cross (right, fwd);
-  r = mod (pix - 1, H);                    # 0-based row (0 = top)
-  c = floor ((pix - 1) / H);               # 0-based column (0 = left)
-  x = (c + j(:,1)) / W - 0.5;
-  y = 0.5 - (r + j(:,2)) / H;
-  m = numel (pix);
-  if (strcmp (cam.type, "orthographic"))
-    ext = cam.extent;
-    O = eye + (x * (ext * W / H)) .* right + (y * ext) .* up;
-    D = repmat (fwd, m, 1);
-  else
-    h = 2 * tand (cam.fov / 2);
-    D = fwd + (x * (h * W / H)) .* right + (y * h) .* up;
-    D ./= sqrt (sum (D .^ 2, 2));
-    O = repmat (eye, m, 1);
-  endif
-endfunction
-
-## Geometric and shading normals at the hits H.
-function [Ng, Ns] = normals (objs, hit, h, P)
-  Ng = zeros (numel (h), 3);
-  Ns = Ng;
-  ob = hit.obj(h);
-  for k = unique (ob).'
-    s = ob == k;
-    o = objs(k);
-    switch (o.type)
-      case "sphere"
-        Ng(s,:) = (P(s,:) - o.center(:).') / o.radius;
-        Ng(s,:) ./= sqrt (sum (Ng(s,:) .^ 2, 2));
-        Ns(s,:) = Ng(s,:);
-      case "plane"
-        Ng(s,:) = repmat (o.normal, nnz (s), 1);
-        Ns(s,:) = Ng(s,:);
-      case "mesh"
-        tri = hit.prim(h(s));
-        Ng(s,:) = o.fn(tri,:);
-        if (isempty (o.normals))
-          Ns(s,:) = Ng(s,:);
-        else
-          u = hit.u(h(s));
-          v = hit.v(h(s));
-          F = o.faces(tri,:);
-          n = (1 - u - v) .* o.normals(F(:,1),:) + u .* o.normals(F(:,2),:) ...
-              + v .* o.normals(F(:,3),:);
-          len = sqrt (sum (n .^ 2, 2));
-          ok = len > 1e-12;
-          n(ok,:) ./= len(ok);
-          n(! ok,:) = Ng(s,:)(! ok,:);
-          Ns(s,:) = n;
-        endif
-    endswitch
-  endfor
+## scene.jitter, default true
+function j = scene_jitter (scene)
+  j = ! isfield (scene, "jitter") || isempty (scene.jitter) || logical (scene.jitter);
 endfunction
 
 ## The slice table: radiance at the normals N(theta_h, psi) about the half

@@ -38,6 +38,14 @@
 ## samples (primary rays) per pixel, default 16 (the paper: 128).
 ## @item "seed"
 ## integer seed of the pixel jitter, default 1.
+## @item "jitter"
+## true (default): each sample at a random place in its cell of the pixel
+## (the @var{spp} samples of a pixel are stratified on a grid of cells);
+## false: at the cell centres, deterministic, so that with @var{spp} = 1 it
+## is the pixel centre and with @var{spp} = n^2 the regular grid of
+## POV-Ray's anti-aliasing (@code{pov_render} option @qcode{"antialias"},
+## n, which adds the centre ray): the mode for comparing renderers without
+## sampling noise.
 ## @item "camera"
 ## @code{"orthographic"} (default) or @code{"perspective"} (same eye and
 ## target, the field of view that shows the orthographic extent at the target).
@@ -99,7 +107,8 @@ function scene = scene_make (name, varargin)
                     struct ("size", [256 256], "spp", 16, "seed", 1,
                             "camera", "orthographic", "light", "directional",
                             "light_direction", [], "irradiance", 1,
-                            "background", [0 0 0], "file", "", "resolution", [96 48]));
+                            "background", [0 0 0], "file", "", "resolution", [96 48],
+                            "jitter", true));
   [H, W] = check_size (opt.size);
   spp = opt.spp;
   if (! (isnumeric (spp) && isscalar (spp) && isreal (spp) && spp >= 1 && spp == fix (spp)))
@@ -126,6 +135,10 @@ function scene = scene_make (name, varargin)
   bg = opt.background;
   if (! (isnumeric (bg) && isreal (bg) && numel (bg) == 3 && all (isfinite (bg))))
     error ("lafortune:badOption", "scene_make: BACKGROUND must be a finite 1 x 3 radiance");
+  endif
+  jit = opt.jitter;
+  if (! (isscalar (jit) && (islogical (jit) || (isnumeric (jit) && any (jit == [0 1])))))
+    error ("lafortune:badOption", "scene_make: JITTER must be true or false");
   endif
   if (! isempty (opt.file) && ! strcmp (name, "mesh"))
     error ("lafortune:badOption", "scene_make: option FILE is for the scene \"mesh\" only");
@@ -200,7 +213,8 @@ function scene = scene_make (name, varargin)
                     "irradiance", E * d ^ 2);
   endif
   scene = struct ("name", name, "width", W, "height", H, "spp", double (spp),
-                  "seed", double (seed), "background", double (bg(:).'),
+                  "seed", double (seed), "jitter", logical (jit),
+                  "background", double (bg(:).'),
                   "camera", camera, "light", light);
   scene.objects = objects;
 endfunction
@@ -313,6 +327,10 @@ endfunction
 %!error id=lafortune:badOption scene_make ("sphere", "irradiance", -1)
 %!error id=lafortune:badOption scene_make ("sphere", "file", "x.ply")
 %!error id=lafortune:badOption scene_make ("sphere", "colour", 1)
+%!error id=lafortune:badOption scene_make ("sphere", "jitter", 2)
+%!test
+%! assert (scene_make ("sphere").jitter, true);
+%! assert (scene_make ("sphere", "jitter", false).jitter, false);
 %!error id=lafortune:meshReadNotFound scene_make ("mesh", "file", "/nonexistent/x.ply")
 
 %!demo

@@ -95,17 +95,15 @@ function [R, gamma] = scene_slice (scene, material, ti, to, mode)
 endfunction
 
 function [L, V, E] = slice_geometry (scene)
-  if (! isstruct (scene) || ! isfield (scene, "light") || ! isfield (scene, "camera"))
-    error ("lafortune:badScene", "scene_slice: SCENE must be a scene struct from scene_make");
-  endif
+  scene_check (scene, "scene_slice", "view");
   if (! strcmp (scene.light.type, "directional") || ! strcmp (scene.camera.type, "orthographic"))
     error ("lafortune:sliceUnsupported",
            "scene_slice: a 2-D slice exists only for a directional light and an orthographic camera, got a %s light and a %s camera",
            scene.light.type, scene.camera.type);
   endif
   L = scene.light.direction(:)' / norm (scene.light.direction);
-  V = scene.camera.eye(:)' - scene.camera.target(:)';
-  V /= norm (V);
+  cam = scene_camera (scene);
+  V = -cam.f;
   E = scene.light.irradiance(:)';
   if (isscalar (E))
     E = E * [1 1 1];
@@ -162,5 +160,7 @@ endfunction
 
 %!error <Invalid call> scene_slice (1, 2, 3)
 %!error id=lafortune:badScene scene_slice (1, 2, 3, 4)
-%!error id=lafortune:sliceUnsupported scene_slice (struct ("light", struct ("type", "point"), "camera", struct ("type", "orthographic")), 1, 0, 0)
-%!error id=lafortune:badMaterial scene_slice (struct ("light", struct ("type", "directional", "direction", [0 0 1], "irradiance", 1), "camera", struct ("type", "orthographic", "eye", [0 0 1], "target", [0 0 0])), 1, 0, 0)
+%!error id=lafortune:sliceUnsupported scene_slice (scene_make ("sphere", "light", "point"), struct ("rho_d", [1 1 1], "Cxy", [], "Cz", [], "e", []), 0, 0)
+%!error id=lafortune:sliceUnsupported scene_slice (scene_make ("sphere", "camera", "perspective"), struct ("rho_d", [1 1 1], "Cxy", [], "Cz", [], "e", []), 0, 0)
+%!error id=lafortune:badMaterial scene_slice (struct ("light", struct ("type", "directional", "direction", [0 0 1], "irradiance", 1), "camera", struct ("type", "orthographic", "eye", [0 0 1], "target", [0 0 0], "up", [0 1 0], "extent", 2)), 1, 0, 0)
+%!error id=lafortune:badScene scene_slice (struct ("light", struct ("type", "directional", "direction", [0 0 0], "irradiance", 1), "camera", struct ("type", "orthographic", "eye", [0 0 1], "target", [0 0 0], "up", [0 1 0], "extent", 2)), struct ("rho_d", [1 1 1], "Cxy", [], "Cz", [], "e", []), 0, 0)

@@ -24,49 +24,23 @@
 function S = pov_cast (scene, cam, L)
   ob = scene.objects;
   nob = numel (ob);
-  ## rays on the half-pixel grid
+  ## rays on the half-pixel grid, against the spheres and planes
   [X, Y] = meshgrid ((0:2*cam.W) / (2*cam.W) - 0.5, 0.5 - (0:2*cam.H) / (2*cam.H));
-  X = X(:); Y = Y(:);
-  if (strcmp (cam.type, "orthographic"))
-    O = cam.eye + X * cam.w .* cam.r + Y * cam.h .* cam.u;
-    D = repmat (cam.f, numel (X), 1);
-  else
-    D = cam.f + X * cam.w .* cam.r + Y * cam.h .* cam.u;
-    D ./= sqrt (sum (D .^ 2, 2));
-    O = repmat (cam.eye, numel (X), 1);
+  [O, D] = camera_rays (cam, X, Y);
+  t = inf (rows (O), 1);
+  hitobj = zeros (rows (O), 1);
+  analytic = find (! strcmp ({ob.type}, "mesh"));
+  if (! isempty (analytic))
+    hc = rt_intersect (ob(analytic), O, D);
+    t = hc.t;
+    hitobj(hc.obj > 0) = analytic(hc.obj(hc.obj > 0));
   endif
-  t = inf (numel (X), 1);
-  N = zeros (numel (X), 3);
-  hitobj = zeros (numel (X), 1);
-  for k = 1:nob
-    switch (ob(k).type)
-      case "sphere"
-        c = double (ob(k).center(:)');
-        rad = double (ob(k).radius);
-        oc = O - c;
-        b = sum (oc .* D, 2);
-        q = b .^ 2 - (sum (oc .^ 2, 2) - rad ^ 2);
-        tt = -b - sqrt (max (q, 0));
-        tt(q < 0 | tt <= 0) = inf;
-        m = tt < t;
-        t(m) = tt(m);
-        N(m,:) = (O(m,:) + tt(m) .* D(m,:) - c) / rad;
-        hitobj(m) = k;
-      case "plane"
-        n = double (ob(k).normal(:)');
-        n /= norm (n);
-        den = D * n';
-        tt = ((double (ob(k).point(:)') - O) * n') ./ den;
-        tt(! (tt > 0)) = inf;
-        m = tt < t;
-        t(m) = tt(m);
-        N(m,:) = repmat (n, nnz (m), 1);
-        hitobj(m) = k;
-    endswitch
-  endfor
   hit = isfinite (t);
   P = O(hit,:) + t(hit) .* D(hit,:);
-  N = N(hit,:);
+  N = zeros (0, 3);
+  if (any (hit))
+    N = hit_normals (ob(analytic), hc, find (hit), P);
+  endif
   V = -D(hit,:);
   keep = false (1, nob);
   keep(unique (hitobj(hit))) = true;
