@@ -149,36 +149,7 @@ function [img, info] = rt_render (scene, material, varargin)
   endif
 
   ## ---- setup: acceleration structures, normals, the slice table
-  objs = scene.objects;
-  objs(1).bvh = [];
-  objs(1).fn = [];
-  scale = norm (scene.camera.eye - scene.camera.target);
-  for k = 1:numel (objs)
-    switch (objs(k).type)
-      case "mesh"
-        V = double (objs(k).vertices);
-        F = double (objs(k).faces);
-        objs(k).bvh = rt_bvh (V, F);
-        fn = cross (V(F(:,2),:) - V(F(:,1),:), V(F(:,3),:) - V(F(:,1),:), 2);
-        objs(k).fn = fn ./ max (sqrt (sum (fn .^ 2, 2)), realmin);
-        if (! isempty (objs(k).normals))
-          nv = double (objs(k).normals);
-          objs(k).normals = nv ./ max (sqrt (sum (nv .^ 2, 2)), realmin);
-        endif
-        scale = max (scale, max (abs (V(:))));
-      case "sphere"
-        scale = max (scale, norm (objs(k).center) + objs(k).radius);
-      case "plane"
-        nrm = double (objs(k).normal(:).');
-        objs(k).normal = nrm / norm (nrm);
-      otherwise
-        error ("lafortune:badScene", "rt_render: unknown object type '%s'", objs(k).type);
-    endswitch
-  endfor
-  epsilon = 1e-7 * scale;
-
-  lt = scene.light;
-  E = double (lt.irradiance(:).') .* [1 1 1];
+  [objs, epsilon] = scene_setup (scene);
   cam = scene_camera (scene);
   if (strcmp (mode, "slice"))
     [Rm, sl] = slice_table (scene, material, n, -cam.f);
@@ -218,75 +189,27 @@ function [img, info] = rt_render (scene, material, varargin)
       endif
       [x, y] = pixel_samples (H, W, k, spp, j);
       [O, D] = camera_rays (cam, x, y);
-      hit = rt_intersect (objs, O, D, epsilon, Inf);
-      h = find (hit.obj > 0);
       t_int += toc (t0);
+      [T, tt] = scene_trace (objs, scene, O, D, epsilon);
+      t_int += tt(1);
+      t_sh += tt(2);
+      t_shade += tt(3);
+      nshadow += T.nshadow;
 
       t0 = tic ();
-      P = O(h,:) + hit.t(h) .* D(h,:);
-      Vw = -D(h,:);
-      [Ng, Ns] = hit_normals (objs, hit, h, P);
-      flip = sum (Ng .* Vw, 2) < 0;
-      Ng(flip,:) = -Ng(flip,:);
-      Ns(flip,:) = -Ns(flip,:);
-      cosv = sum (Ns .* Vw, 2);
-      bad = cosv <= 0;
-      Ns(bad,:) = Ng(bad,:);
-      cosv(bad) = sum (Ng(bad,:) .* Vw(bad,:), 2);
-      if (strcmp (lt.type, "directional"))
-        L = repmat (lt.direction(:).' / norm (lt.direction), numel (h), 1);
-        Eh = E;
-        dist = Inf (numel (h), 1);
-      else
-        L = lt.position(:).' - P;
-        dist = sqrt (sum (L .^ 2, 2));
-        L ./= dist;
-        Eh = E ./ dist .^ 2;
-      endif
-      cosi = sum (Ns .* L, 2);
-      lit = cosi > 0 & sum (Ng .* L, 2) > 0;
-      t_shade += toc (t0);
-
-      t0 = tic ();
-      il = find (lit);
-      if (! isempty (il))
-        sh = rt_intersect (objs, P(il,:) + epsilon * Ng(il,:), L(il,:), 0,
-                           dist(il) - epsilon, true);
-        lit(il(isfinite (sh.t))) = false;
-        nshadow += numel (il);
-      endif
-      t_sh += toc (t0);
-
-      t0 = tic ();
-      il = find (lit);
+      il = find (T.lit);
       rad = zeros (numel (il), 3);
       if (! isempty (il))
         if (strcmp (mode, "slice"))
-          rad = double (slice_lookup (Rm, sl, Ns(il,:))) .* cosi(il);
+          rad = double (slice_lookup (Rm, sl, T.Ns(il,:))) .* T.cosi(il);
         else
-          Nl = Ns(il,:);
-          a = repmat ([1 0 0], numel (il), 1);
-          swap = abs (Nl(:,1)) > 0.9;
-          a(swap,:) = repmat ([0 1 0], nnz (swap), 1);
-          X = cross (a, Nl, 2);
-          X ./= sqrt (sum (X .^ 2, 2));
-          Y = cross (Nl, X, 2);
-          Li = L(il,:);
-          Vi = Vw(il,:);
-          wi = [sum(Li .* X, 2), sum(Li .* Y, 2), cosi(il)];
-          wo = [sum(Vi .* X, 2), sum(Vi .* Y, 2), cosv(il)];
-          wi ./= sqrt (sum (wi .^ 2, 2));
-          wo ./= sqrt (sum (wo .^ 2, 2));
-          if (rows (Eh) > 1)
-            Eh = Eh(il,:);
-          endif
-          rad = material_eval (material, wi, wo) .* cosi(il) .* Eh;
+          [wi, wo] = local_dirs (T.Ns(il,:), T.L(il,:), T.V(il,:));
+          rad = material_eval (material, wi, wo) .* T.cosi(il) .* T.E(il,:);
         endif
       endif
       val = zeros (m, 3);
-      val(h(il),:) = rad;
-      miss = hit.obj == 0;
-      val(miss,:) = repmat (bg, nnz (miss), 1);
+      val(T.h(il),:) = rad;
+      val(T.miss,:) = repmat (bg, nnz (T.miss), 1);
       for c = 1:3
         acc(:,c) += accumarray (pix, val(:,c), [npix 1]);
       endfor
