@@ -77,11 +77,11 @@ function w = merl_weights (max_angle, measure)
     part = q >= 0 & ! full;
     ## nodes that keep every phi_d: the same integral in every phi_d bin
     if (strcmp (measure, "solid_angle"))
-      wi = accumarray (bin(full), g(full), [90 1]) * (dphi * ones (1, 180));
+      wk = accumarray (bin(full), g(full), [90 1]) * (dphi * ones (1, 180));
     else
       gA = accumarray (bin(full), g(full) .* A(full) .^ 2, [90 1]);
       gB = accumarray (bin(full), g(full) .* B(full) .^ 2, [90 1]);
-      wi = gA * (dphi * ones (1, 180)) + sgn * gB * c2bin;
+      wk = gA * (dphi * ones (1, 180)) + sgn * gB * c2bin;
     endif
     ## nodes that keep part of [0, pi]
     if (any (part))
@@ -101,9 +101,9 @@ function w = merl_weights (max_angle, measure)
         c2 = (len / 2 + (sH - sL) / 4) .* on;
         v = A(part) .^ 2 .* len + sgn * B(part) .^ 2 .* c2;
       endif
-      wi += accum_rows (bin(part), v .* g(part), 90);
+      wk += accum_rows (bin(part), v .* g(part), 90);
     endif
-    w(:,:,i+1) = wi.';
+    w(:,:,i+1) = wk.';
   endfor
   w = w(:);
   keys{end+1} = k;
