@@ -2,16 +2,26 @@
 ## SPDX-License-Identifier: GPL-3.0-or-later
 
 ## -*- texinfo -*-
-## @deftypefn {} {[@var{wi}, @var{wo}] =} merl_grid ()
+## @deftypefn  {} {[@var{wi}, @var{wo}] =} merl_grid ()
+## @deftypefnx {} {[@var{wi}, @var{wo}] =} merl_grid (@var{idx})
 ## Directions of every MERL bin (private), in bin order (phi_d fastest), at
 ## the grid points theta_h = (i/90)^2 pi/2, theta_d = j/90 pi/2,
-## phi_d = k/180 pi, with phi_h = 0.  1458000 x 3 each.
+## phi_d = k/180 pi, with phi_h = 0.  1458000 x 3 each, or only the bins
+## with the (1-based) indices @var{idx}, in that order.
 ## @end deftypefn
-function [wi, wo] = merl_grid ()
-  [ip, id, ih] = ndgrid (0:179, 0:89, 0:89);
-  th = (ih(:) / 90) .^ 2 * pi / 2;
-  td = id(:) / 90 * pi / 2;
-  pd = ip(:) / 180 * pi;
+function [wi, wo] = merl_grid (idx)
+  if (nargin < 1)
+    [ip, id, ih] = ndgrid (0:179, 0:89, 0:89);
+    ip = ip(:); id = id(:); ih = ih(:);
+  else
+    k = idx(:) - 1;
+    ip = mod (k, 180);
+    id = mod (floor (k / 180), 90);
+    ih = floor (k / 16200);
+  endif
+  th = (ih / 90) .^ 2 * pi / 2;
+  td = id / 90 * pi / 2;
+  pd = ip / 180 * pi;
   dx = sin (td) .* cos (pd);
   dy = sin (td) .* sin (pd);
   dz = cos (td);
