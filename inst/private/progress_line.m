@@ -61,7 +61,8 @@ function p = progress_line (p, fraction, elapsed)
   if (p.tty)
     due = elapsed - p.last > 0.5;
   else
-    due = decile > p.decile || elapsed - p.last >= 30;
+    ## (100% is said by the "done" line)
+    due = fraction < 1 && (decile > p.decile || elapsed - p.last >= 30);
   endif
   if (! due)
     return;
