@@ -20,7 +20,7 @@
 ##
 ## Every image of a row is tone-mapped with the reference's exposure
 ## (@code{img_tonemap}, "auto"), so that brightness differences show.  In the
-## bottom-right corner of each fit, framed in white, is the absolute
+## bottom-right corner (option @code{"corner"}) of each fit, framed in white, is the absolute
 ## difference from the reference (the mean over R, G, B of |fit - reference|,
 ## block-averaged), in false colour on the scale under the figure: black is
 ## no difference, white a difference of @code{"diff_scale"} times the
@@ -41,6 +41,9 @@
 ## @item "inset"
 ## the inset's size as a fraction of the image's width and height (default
 ## 1/3).
+## @item "corner"
+## where the inset goes: @qcode{"southeast"} (default, bottom right),
+## @qcode{"southwest"}, @qcode{"northeast"} or @qcode{"northwest"}.
 ## @item "width"
 ## the width of each image in pixels (default: 180 for tall images, 240
 ## for others).
@@ -67,7 +70,7 @@ function [hf, hax] = plot_renders (imgs, labels, psnr, varargin)
     print_usage ();
   endif
   opt = parse_opts (varargin, fname, struct ("paper", [], "rows", {{}}, "title", "",
-                                             "diff_scale", 0.1, "inset", 1/3,
+                                             "diff_scale", 0.1, "inset", 1/3, "corner", "southeast",
                                              "width", [], "file", ""));
   if (! iscell (imgs) || isempty (imgs) || ndims (imgs) > 2)
     error ("lafortune:badImage", "%s: IMGS must be a 1 x C or R x C cell of images", fname);
@@ -112,6 +115,10 @@ function [hf, hax] = plot_renders (imgs, labels, psnr, varargin)
   if (! ischar (opt.title))
     error ("lafortune:badOption", "%s: TITLE must be a string", fname);
   endif
+  corners = {"southeast", "southwest", "northeast", "northwest"};
+  if (! (ischar (opt.corner) && any (strcmp (opt.corner, corners))))
+    error ("lafortune:badOption", "%s: CORNER must be one of %s", fname, strjoin (corners, ", "));
+  endif
 
   ## panel sizes in pixels: one width for all, heights from each row's aspect
   asp = cellfun (@(x) rows (x) / columns (x), imgs(:,1));
@@ -152,7 +159,7 @@ function [hf, hax] = plot_renders (imgs, labels, psnr, varargin)
       else
         rgb = double (img_tonemap (x, stops)) / 255;
         d = mean (abs (x - ref), 3) / (ds * peak);
-        rgb = add_inset (rgb, d, fi, cmap);
+        rgb = add_inset (rgb, d, fi, cmap, opt.corner);
       endif
       ha = plot_place (hf, [L + (c - 1) * (pw + G), y, pw, ph(r)]);
       hax(r,c) = ha;
@@ -201,8 +208,8 @@ function p = check_psnr (p, R, C, what, fname)
 endfunction
 
 ## the false-colour difference D (H x W, 1 = full colour), block-averaged,
-## in the bottom-right corner of RGB with a white frame
-function rgb = add_inset (rgb, D, frac, cmap)
+## in a corner of RGB with a white frame
+function rgb = add_inset (rgb, D, frac, cmap, corner)
   [H, W] = size (D);
   f = max (1, ceil (1 / frac));
   h = floor (H / f); w = floor (W / f);
@@ -210,13 +217,21 @@ function rgb = add_inset (rgb, D, frac, cmap)
     return;
   endif
   B = reshape (D(1:h*f, 1:w*f), f, h, f, w);
-  B = squeeze (mean (mean (B, 1), 3));
-  B = reshape (B, h, w);
+  B = reshape (mean (mean (B, 1), 3), h, w);
   ins = plot_rgb (B, cmap, [0 1]);
   fr = max (1, round (min (H, W) / 128));   # frame width
-  r0 = H - h - fr; c0 = W - w - fr;
-  rgb(r0-fr+1:H, c0-fr+1:W, :) = 1;
-  rgb(r0+1:r0+h, c0+1:c0+w, :) = ins;
+  if (corner(1) == "s")                     # rows of the framed inset
+    rr = H - h - 2 * fr + 1 : H;
+  else
+    rr = 1 : h + 2 * fr;
+  endif
+  if (strcmp (corner(6:end), "east"))
+    cc = W - w - 2 * fr + 1 : W;
+  else
+    cc = 1 : w + 2 * fr;
+  endif
+  rgb(rr, cc, :) = 1;
+  rgb(rr(fr+1:fr+h), cc(fr+1:fr+w), :) = ins;
 endfunction
 
 %!demo
@@ -276,6 +291,22 @@ endfunction
 %!error <PSNR must be 1 x 1> plot_renders ({ref, a}, {"a", "b"}, [1 2])
 %!error <PAPER must be 1 x 2> plot_renders ({ref, a, b}, {"a", "b", "c"}, [1 2], "paper", 3)
 %!error id=lafortune:badOption plot_renders ({ref, a}, {"a", "b"}, 1, "diff_scale", 0)
+%!error <CORNER must be one of> plot_renders ({ref, a}, {"a", "b"}, 1, "corner", "top")
+
+%!test
+%! ## the other corners
+%! [hf, hax] = plot_renders ({ref, b, b, b}, {"m", "nw", "ne", "sw"}, [1 2 3], "inset", 0.25);
+%! close (hf);
+%! for k = 1:3
+%!   cr = {"northwest", "northeast", "southwest"}{k};
+%!   [hf, hax] = plot_renders ({ref, ref}, {"m", "f"}, 1, "inset", 0.25, "corner", cr);
+%!   c = get (findobj (hax(2), "type", "image"), "cdata");
+%!   close (hf);
+%!   r = ifelse (cr(1) == "n", [1 18], [128 111]);
+%!   q = ifelse (strcmp (cr(6:end), "east"), [64 55], [1 10]);
+%!   assert (squeeze (c(r(1), q(2), :))', [1 1 1]);               # the frame
+%!   assert (squeeze (c(r(2), q(2), :))', hot (256)(1,:));        # the inset
+%! endfor
 
 %!test
 %! assert (strncmp (d, tempdir (), numel (tempdir ())));   # only our scratch folder
