@@ -18,7 +18,8 @@
 ## @item slice-MATERIAL.png (plot_slice): the theta_h-theta_d image at
 ## phi_d = 90 degrees of the data and the in-plane fits;
 ## @item fit-trace.png (plot_trace): in-plane fit error against run time;
-## @item spp.png: render PSNR against run time (drawn here: one small plot).
+## @item spp.png: render PSNR against run time, one panel per material (drawn
+## here: a small plot).
 ## @end itemize
 ## @end deftypefn
 function repro_figures ()
@@ -98,23 +99,23 @@ function spp_figure (c, file)
   if (isempty (getenv ("DISPLAY")))
     vis = "off";
   endif
-  h = figure ("visible", vis, "position", [40 40 720 440], "color", "w");
-  ax = axes ("parent", h, "position", [90/720 60/440 560/720 330/440]);
-  for i = 1:numel (c.materials)
+  n = numel (c.materials);
+  W = 80 + n * 400 + (n - 1) * 60 + 20;
+  h = figure ("visible", vis, "position", [40 40 W 420], "color", "w");
+  for i = 1:n
     mat = c.materials{i};
     P = jsondecode (fileread (fullfile (c.results, "spp", [mat ".json"])));
+    ax = axes ("parent", h, "position", [(80 + (i - 1) * 460) / W, 60 / 420, 400 / W, 310 / 420]);
     semilogx (ax, P.time, P.psnr, "-o", "linewidth", 1.5);
-    hold (ax, "on");
     for j = 1:numel (P.spp)
       text (ax, P.time(j) * 1.06, P.psnr(j), sprintf ("%d", P.spp(j)), "fontsize", 9);
     endfor
+    xlabel (ax, "render time (s); numbers: samples per pixel");
+    if (i == 1)
+      ylabel (ax, sprintf ("PSNR against %d spp (dB)", c.spp));
+    endif
+    title (ax, sprintf ("%s: measured data, rt_render", mat), "interpreter", "none");
   endfor
-  hold (ax, "off");
-  xlabel (ax, "render time (s)");
-  ylabel (ax, sprintf ("PSNR against %d spp (dB)", c.spp));
-  title (ax, "measured data, rt_render: PSNR against run time (numbers: samples per pixel)",
-         "interpreter", "none");
-  legend (ax, c.materials, "location", "southeast", "interpreter", "none");
   tmp = [file ".tmp.png"];
   print (h, "-dpngcairo", "-r90", tmp);
   close (h);
