@@ -164,3 +164,18 @@
 %! assert (v, [0 0 0]); assert (ok, false);
 %! assert (merl_eval (b, up, mir, "linear"), m.rho_d / pi + [1 0.9^20 0.8^30], -0.05);
 %! assert (merl_eval (b, [0 0 1], down, "linear"), [0 0 0]);
+
+## scene_slice takes angles (radians): one pair above and one below the horizon
+%!test
+%! s = scene_make ("sphere");
+%! m = struct ("rho_d", [0.1 0.2 0.3], "Cxy", [-1 -0.9 -0.8], "Cz", [1 0.9 0.8], "e", [10 20 30]);
+%! b = merl_synth (m);
+%! for mat = {m, b}
+%!   up = scene_slice (s, mat{1}, 0.3, 0.4, "pairs");
+%!   assert (size (up), [1 3]);
+%!   assert (all (up > 0));
+%!   assert (scene_slice (s, mat{1}, 2, 0.4, "pairs"), [0 0 0]);
+%!   assert (scene_slice (s, mat{1}, 0.3, 2, "pairs"), [0 0 0]);
+%!   assert (squeeze (scene_slice (s, mat{1}, 2, 2))', [0 0 0]);
+%! endfor
+%! assert (scene_slice (s, b, 0.3, 0.4, "pairs"), scene_slice (s, m, 0.3, 0.4, "pairs"), -0.05);
