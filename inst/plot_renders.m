@@ -20,7 +20,8 @@
 ##
 ## Every image of a row is tone-mapped with the reference's exposure
 ## (@code{img_tonemap}, "auto"), so that brightness differences show.  In the
-## bottom-right corner (option @code{"corner"}) of each fit, framed in white, is the absolute
+## bottom-right corner (option @code{"corner"}) of each fit, framed in black
+## and white, is the absolute
 ## difference from the reference (the mean over R, G, B of |fit - reference|,
 ## block-averaged), in false colour on the scale under the figure: black is
 ## no difference, white a difference of @code{"diff_scale"} times the
@@ -219,19 +220,21 @@ function rgb = add_inset (rgb, D, frac, cmap, corner)
   B = reshape (D(1:h*f, 1:w*f), f, h, f, w);
   B = reshape (mean (mean (B, 1), 3), h, w);
   ins = plot_rgb (B, cmap, [0 1]);
-  fr = max (1, round (min (H, W) / 128));   # frame width
+  fr = max (1, round (min (H, W) / 256));   # frame: black outside, white inside
+  F = 2 * fr;
   if (corner(1) == "s")                     # rows of the framed inset
-    rr = H - h - 2 * fr + 1 : H;
+    rr = H - h - 2 * F + 1 : H;
   else
-    rr = 1 : h + 2 * fr;
+    rr = 1 : h + 2 * F;
   endif
   if (strcmp (corner(6:end), "east"))
-    cc = W - w - 2 * fr + 1 : W;
+    cc = W - w - 2 * F + 1 : W;
   else
-    cc = 1 : w + 2 * fr;
+    cc = 1 : w + 2 * F;
   endif
-  rgb(rr, cc, :) = 1;
-  rgb(rr(fr+1:fr+h), cc(fr+1:fr+w), :) = ins;
+  rgb(rr, cc, :) = 0;
+  rgb(rr(fr+1:end-fr), cc(fr+1:end-fr), :) = 1;
+  rgb(rr(F+1:F+h), cc(F+1:F+w), :) = ins;
 endfunction
 
 %!demo
@@ -280,9 +283,11 @@ endfunction
 %! c = get (findobj (hax(2), "type", "image"), "cdata");
 %! close (hf);
 %! assert (squeeze (c(end-5, end-5, :))', hot (256)(1,:));   # no difference
-%! assert (squeeze (c(end, end-5, :))', [1 1 1]);            # the frame, 1 pixel
-%! assert (squeeze (c(end-33, end-5, :))', [1 1 1]);         # 32-row inset
-%! assert (any (squeeze (c(end-34, end-5, :)) != 1));      # the image
+%! assert (squeeze (c(end, end-5, :))', [0 0 0]);            # the frame: black
+%! assert (squeeze (c(end-1, end-5, :))', [1 1 1]);          # and white
+%! assert (squeeze (c(end-34, end-5, :))', [1 1 1]);         # 32-row inset
+%! assert (squeeze (c(end-35, end-5, :))', [0 0 0]);
+%! assert (any (squeeze (c(end-36, end-5, :)) != 0));       # the image
 
 %!error <Invalid call> plot_renders ({ref})
 %!error id=lafortune:badImage plot_renders (ref, {"a"}, [])
@@ -302,7 +307,7 @@ endfunction
 %!   [hf, hax] = plot_renders ({ref, ref}, {"m", "f"}, 1, "inset", 0.25, "corner", cr);
 %!   c = get (findobj (hax(2), "type", "image"), "cdata");
 %!   close (hf);
-%!   r = ifelse (cr(1) == "n", [1 18], [128 111]);
+%!   r = ifelse (cr(1) == "n", [2 18], [127 111]);
 %!   q = ifelse (strcmp (cr(6:end), "east"), [64 55], [1 10]);
 %!   assert (squeeze (c(r(1), q(2), :))', [1 1 1]);               # the frame
 %!   assert (squeeze (c(r(2), q(2), :))', hot (256)(1,:));        # the inset

@@ -72,6 +72,7 @@ function repro_figures ()
     endif
     done (plot_renders (imgs, [{"measured"}, lobe_names], psnr, "paper", paper,
                         "rows", {"in-plane fits", "hemisphere fits"},
+                        "width", min (256, max (180, columns (ref))),   # the paper's 256: 1:1
                         "title", sprintf ("%s: rt_render (measured), POV-Ray (fits), %d x %d, %d spp",
                                           mat, columns (ref), rows (ref), c.spp),
                         "file", fullfile (fd, ["renders-" mat ".png"])));
