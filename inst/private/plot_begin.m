@@ -13,7 +13,7 @@
 ## handle".
 ## @end deftypefn
 function hf = plot_begin (fname, sz)
-  warning ("off", "Octave:gnuplot-graphics");
+  warning ("off", "Octave:gnuplot-graphics", "local");   # the toolkit's nag, here only
   args = {"position", [40 40 sz], "color", "w"};
   if (! isguirunning () && isempty (getenv ("DISPLAY")))
     args(end+1:end+2) = {"visible", "off"};
