@@ -14,7 +14,8 @@
 ## with the paper's PSNR) and hemisphere fits in two rows, with difference
 ## insets and PSNR;
 ## @item polar-MATERIAL.png (plot_polar): data and the 3-lobe in-plane fit
-## in the plane of incidence at theta_i = 15, 30, 45, 60 degrees;
+## in the plane of incidence at theta_i = 15, 30, 45, 60 degrees (log radius:
+## the grazing lobes would hide the others);
 ## @item slice-MATERIAL.png (plot_slice): the theta_h-theta_d image at
 ## phi_d = 90 degrees of the data and the in-plane fits;
 ## @item fit-trace.png (plot_trace): in-plane fit error against run time;
@@ -47,7 +48,7 @@ function repro_figures ()
                       "names", strcat (lobe_names, " fit"), "title", mat,
                       "file", fullfile (fd, ["plane-" mat ".png"])));
     ## BRDF Explorer's view and MERL's
-    done (plot_polar ({b, models{end}}, [15 30 45 60],
+    done (plot_polar ({b, models{end}}, [15 30 45 60], "scale", "log",
                       "names", {[mat ", measured"], sprintf("%s fit (in-plane)", lobe_names{end})},
                       "file", fullfile (fd, ["polar-" mat ".png"])));
     done (plot_slice ([{b}, models], 90, "names", [{"measured"}, strcat(lobe_names, " fit")],
