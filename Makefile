@@ -18,7 +18,7 @@ export MERL_PROXY_DIR
 # real MERL .binary files, when a user has them (make reproduce)
 MERL_DIR ?= data/merl
 QUICK ?= 0
-DEB_PACKAGES := octave octave-optim liboctave-dev libopenexr-dev pkg-config povray gnuplot-nox fonts-dejavu-core
+DEB_PACKAGES := octave octave-optim liboctave-dev libopenexr-dev pkg-config povray gnuplot-nox fonts-dejavu-core fonts-freefont-otf
 
 .PHONY: all deps check bench dist install reproduce clean distclean
 
@@ -43,8 +43,9 @@ deps:
 	  miss=""; \
 	  for t in octave-cli mkoctfile povray gnuplot pkg-config; do command -v $$t >/dev/null 2>&1 || miss="$$miss $$t"; done; \
 	  pkg-config --exists OpenEXR 2>/dev/null || miss="$$miss OpenEXR(pkg-config)"; \
+	  fc-list 2>/dev/null | grep -q FreeSans || miss="$$miss FreeSans(GNU FreeFont: Octave's default figure font)"; \
 	  if [ -n "$$miss" ]; then echo "deps: not a Debian system, and missing:$$miss (and the Octave package optim)"; exit 1; fi; \
-	  echo "deps: not a Debian system; octave-cli, mkoctfile, povray, gnuplot and OpenEXR found"; \
+	  echo "deps: not a Debian system; octave-cli, mkoctfile, povray, gnuplot, OpenEXR and FreeSans found"; \
 	fi
 	@mkdir -p $(HOME)/.local/share/octave
 

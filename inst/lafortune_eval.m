@@ -43,7 +43,8 @@ function f = lafortune_eval (model, wi, wo)
   f = zeros (rows (wi), 3);
   for c = 1:3
     p = [model.rho_d(c); reshape([model.Cxy(:,c) model.Cz(:,c) model.e(:,c)].', [], 1)];
-    f(above,c) = lafortune_core (p, sxy(above), sz(above));
+    ## (above,1): a single row indexed by a false scalar stays 0 x 1, not 0 x 0
+    f(above,c) = lafortune_core (p, sxy(above,1), sz(above,1));
   endfor
 endfunction
 
@@ -101,6 +102,18 @@ endfunction
 %! f = lafortune_eval (m, [0 0 1], single ([0 -sin(0.2) -cos(0.2); 0 0 1]));
 %! assert (f(1,:), [0 0 0]);
 %! assert (f(2,:), m.rho_d / pi + [1 0.9^20 0.8^30], 1e-6);
+
+%!test
+%! ## a single pair above or below the horizon (one row: no 0 x 0 indexing)
+%! wa = [sin(0.5) 0 cos(0.5)];
+%! assert (lafortune_eval (m, [0 0 1], [0 sin(2) cos(2)]), [0 0 0]);
+%! assert (lafortune_eval (m, [0 sin(2) cos(2)], [0 0 1]), [0 0 0]);
+%! assert (lafortune_eval (m, [0 0 -1], [0 0 -1]), [0 0 0]);
+%! f1 = lafortune_eval (m, wa, [-wa(1:2) wa(3)]);
+%! assert (size (f1), [1 3]);
+%! assert (f1, m.rho_d / pi + [1 0.9^20 0.8^30], 1e-12);   # mirror: base = Cz
+%! ## the horizon itself (z = 0) is below
+%! assert (lafortune_eval (m, [1 0 0], [0 0 1]), [0 0 0]);
 
 %!error <Invalid call> lafortune_eval (1, 2)
 %!error <no field 'Cz'> lafortune_eval (struct ("rho_d", [1 1 1], "Cxy", [1 1 1], "e", [1 1 1]), [0 0 1], [0 0 1])

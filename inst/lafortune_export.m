@@ -6,7 +6,9 @@
 ## Write a Lafortune model to a file.
 ##
 ## @var{model} is a struct with fields @code{rho_d} (1 x 3), @code{Cxy},
-## @code{Cz}, @code{e} (nlobes x 3) and optionally @code{name}.
+## @code{Cz}, @code{e} (nlobes x 3) and optionally @code{name}, written as
+## one line (control characters become spaces; "lafortune-model" when there
+## is none).
 ## @var{format} is one of
 ##
 ## @table @code
@@ -20,7 +22,10 @@
 ## o_z and n (the exponent); columns R, G, B.
 ## @item "brdfexplorer"
 ## an analytic @file{.brdf} file for Disney's BRDF Explorer: every
-## parameter is a slider, the shader evaluates the same model.
+## parameter is a slider, the shader evaluates the same model: 0 below the
+## horizon, and ux vx + uy vy as dot(L,V) - dot(L,N) dot(V,N), free of the
+## tangents X and Y (which BRDF Explorer's lit sphere leaves undefined where
+## the normal is +-Y).
 ## @item "merl"
 ## the model resampled into a MERL @file{.binary} (see @code{merl_synth},
 ## @code{merl_write}).
@@ -47,7 +52,14 @@ function lafortune_export (model, file, format)
   endif
   name = "lafortune-model";
   if (isstruct (model) && isfield (model, "name") && ischar (model.name) && ! isempty (model.name))
-    name = model.name;
+    ## one line of printable text: a control character (a newline) would end
+    ## the comment it is written in, and BRDF Explorer refuses such a file
+    name = model.name(:).';
+    name(name < 32 | name == 127) = " ";
+    name = strtrim (name);
+    if (isempty (name))
+      name = "lafortune-model";
+    endif
   endif
   model = check_model (model, "lafortune_export");
   formats = {"json", "text", "brdfexplorer", "merl"};
@@ -123,8 +135,12 @@ function txt = brdf_text (m, name)
          "    float b = cxy * sxy + cz * sz;\n" ...
          "    return b > 0.0 ? pow(b, e) : 0.0;\n}\n\n" ...
          "vec3 BRDF( vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y )\n{\n" ...
-         "    float sxy = dot(L, X) * dot(V, X) + dot(L, Y) * dot(V, Y);\n" ...
-         "    float sz = dot(L, N) * dot(V, N);\n" ...
+         "    float ln = dot(L, N);\n" ...
+         "    float vn = dot(V, N);\n" ...
+         "    if (ln <= 0.0 || vn <= 0.0) return vec3(0.0);   // below the horizon, as lafortune_eval\n" ...
+         "    // ux vx + uy vy without X and Y (BRDF Explorer's lit sphere has NaN there at N = +-Y)\n" ...
+         "    float sxy = dot(L, V) - ln * vn;\n" ...
+         "    float sz = ln * vn;\n" ...
          body ...
          "    return f;\n}\n\n" ...
          "::end shader\n"];
@@ -167,6 +183,43 @@ endfunction
 %! assert (! isempty (strfind (t, "vec3 BRDF( vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y )")));
 %! assert (! isempty (regexp (t, "float e1_b 0 2469 1234.5")));
 %! assert (numel (regexp (t, "\\nfloat \\w+ [-0-9]")), 3 + 2 * 9);
+%! ## below the horizon 0, as lafortune_eval; ux vx + uy vy free of X and Y
+%! assert (! isempty (strfind (t, "if (ln <= 0.0 || vn <= 0.0) return vec3(0.0);")));
+%! assert (! isempty (strfind (t, "float sxy = dot(L, V) - ln * vn;")));
+%! assert (isempty (regexp (t, "dot\\([LV], [XY]\\)", "once")));
+%! assert (! isempty (strfind (t, "Lafortune model 'test model'")));
+
+%!test
+%! ## the shader's formula, evaluated here, is lafortune_eval's (1e-12),
+%! ## for pairs above and below the horizon and a single pair
+%! t = [0.2 0.7 1.2 1.5]; p = [0 0.5 2 3];
+%! [T, P] = ndgrid (t, p);
+%! L = [sin(T(:)) .* cos(P(:)) sin(T(:)) .* sin(P(:)) cos(T(:))];
+%! V = L([3 1 4 2 8 5 6 7 10 9 12 11 14 13 16 15],:);
+%! V(end,:) = [0 sin(2) cos(2)];                     # one below the horizon
+%! ln = L(:,3); vn = V(:,3);
+%! sxy = sum (L .* V, 2) - ln .* vn; sz = ln .* vn;
+%! g = repmat (m.rho_d / pi, rows (L), 1);
+%! for k = 1:2
+%!   g += max (m.Cxy(k,:) .* sxy + m.Cz(k,:) .* sz, 0) .^ m.e(k,:);
+%! endfor
+%! g(ln <= 0 | vn <= 0,:) = 0;
+%! assert (g, lafortune_eval (m, L, V), 1e-12);
+%! assert (lafortune_eval (m, L(1,:), V(end,:)), [0 0 0]);
+
+%!test
+%! ## control characters leave the name; a model without a name says so
+%! f = fullfile (d, "n.brdf");
+%! m2 = m; m2.name = sprintf ("red\nplastic\t(2 lobes)\r");
+%! lafortune_export (m2, f, "brdfexplorer");
+%! t = fileread (f);
+%! assert (! isempty (strfind (t, "Lafortune model 'red plastic (2 lobes)'")));
+%! assert (! any (t < 32 & t != 10));
+%! lafortune_export (m2, fullfile (d, "n.txt"), "text");
+%! t = fileread (fullfile (d, "n.txt"));
+%! assert (strncmp (t, "# Lafortune model: red plastic (2 lobes), 2 lobe(s)", 50));
+%! lafortune_export (rmfield (m, "name"), f, "brdfexplorer");
+%! assert (! isempty (strfind (fileread (f), "Lafortune model 'lafortune-model'")));
 
 %!test
 %! f = fullfile (d, "m.binary");

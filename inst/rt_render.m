@@ -76,7 +76,9 @@
 ##
 ## Other options: @code{"jitter"} (default @code{scene.jitter}, else true:
 ## overrides it), @code{"progress"} (default true: on renders longer than
-## 2 s a line "rt_render: 42% done, 12 s left" is updated in place),
+## 2 s a line "rt_render: 42% done, 12 s left" is updated in place on a
+## terminal; when stdout is not a terminal, a line is printed every 10% or
+## 30 s, with no carriage returns),
 ## @code{"chunk"} (rays traced at once, default 65536: bounds the memory).
 ## The jitter comes from @code{rand} seeded with @code{scene.seed} (the
 ## generator's state is restored afterwards), so the same scene gives the same
@@ -172,8 +174,9 @@ function [img, info] = rt_render (scene, material, varargin)
   bg = double (scene.background(:).');
   nshadow = 0;
   t_int = t_sh = t_shade = 0;
-  last_print = -Inf;
-  printed = false;
+  if (opt.progress)
+    prog = progress_line ("rt_render");
+  endif
   state = rand ("state");
   unwind_protect
     rand ("state", scene.seed);
@@ -216,15 +219,7 @@ function [img, info] = rt_render (scene, material, varargin)
       t_shade += toc (t0);
 
       if (opt.progress)
-        el = toc (t_start);
-        if (el > 2 && el - last_print > 0.5)
-          done = (k0 + m) / total;
-          fprintf ("\rrt_render: %3.0f%% done, %5.0f s left ", 100 * done,
-                   el * (1 - done) / done);
-          fflush (stdout);
-          last_print = el;
-          printed = true;
-        endif
+        prog = progress_line (prog, (k0 + m) / total, toc (t_start));
       endif
     endfor
   unwind_protect_cleanup
@@ -232,9 +227,8 @@ function [img, info] = rt_render (scene, material, varargin)
   end_unwind_protect
   img = reshape (acc / spp, H, W, 3);
   time_total = toc (t_start);
-  if (printed)
-    fprintf ("\rrt_render: 100%% done in %.1f s          \n", time_total);
-    fflush (stdout);
+  if (opt.progress)
+    progress_line (prog, "done", time_total);
   endif
   rays = total + nshadow;
   info = struct ("mode", mode, "time_setup", time_setup, "time_intersect", t_int,

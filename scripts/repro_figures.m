@@ -3,116 +3,121 @@
 
 ## -*- texinfo -*-
 ## @deftypefn {} {} repro_figures ()
-## Step 6 of `make reproduce`: the figures, PNG through gnuplot
-## (print -dpngcairo) into RESULTS/figures:
-## plane-MATERIAL.png (the paper's Fig. 2 and 3: in-plane data at
-## theta_i = 30 degrees and the 1-, 2-, 3-lobe fits, per channel),
-## renders-MATERIAL.png (Fig. 4 and 5: measured render and the 1/2/3-lobe
-## renders with their difference images and PSNR), fit-trace.png (fit error
-## against run time) and spp.png (render PSNR against run time).
+## Step 6 of `make reproduce`: the figures, PNG files in RESULTS/figures,
+## drawn by the package's plot_* functions (headless: the gnuplot toolkit,
+## print -dpngcairo).  This script only decides what goes in which figure:
+## @itemize
+## @item plane-MATERIAL.png (plot_plane; the paper's Fig. 2 and 3): in-plane
+## data at theta_i = 30 degrees and the 1-, 2-, 3-lobe in-plane fits;
+## @item renders-MATERIAL.png (plot_renders; Fig. 4 and 5): the measured
+## render and the POV-Ray renders of the fits, in-plane (the paper's method,
+## with the paper's PSNR) and hemisphere fits in two rows, with difference
+## insets and PSNR;
+## @item polar-MATERIAL.png (plot_polar): data and the 3-lobe in-plane fit
+## in the plane of incidence at theta_i = 15, 30, 45, 60 degrees (log radius:
+## the grazing lobes would hide the others);
+## @item slice-MATERIAL.png (plot_slice): the theta_h-theta_d image at
+## phi_d = 90 degrees of the data and the in-plane fits;
+## @item fit-trace.png (plot_trace): in-plane fit error against run time;
+## @item spp.png: render PSNR against run time, one panel per material (drawn
+## here: a small plot).
+## @end itemize
 ## @end deftypefn
 function repro_figures ()
   c = repro_config ();
-  warning ("off", "Octave:gnuplot-graphics");
-  graphics_toolkit ("gnuplot");
   fd = fullfile (c.results, "figures");
   if (! isfolder (fd))
     mkdir (fd);
   endif
-  chn = {"red", "green", "blue"};
+  nl = numel (c.lobes);
+  lobe_names = arrayfun (@(k) sprintf ("%d lobe%s", k, ifelse (k > 1, "s", "")), c.lobes,
+                         "uniformoutput", false);
+  fits = cell (1, numel (c.materials));
   for i = 1:numel (c.materials)
     mat = c.materials{i};
     printf ("reproduce: [%s] figures\n", mat);
     fflush (stdout);
     b = merl_read (fullfile (c.results, "data", [mat ".binary"]));
-    S = merl_plane (b, "theta_i", 30, "max_angle", c.max_angle, "step", 0.5);
-    ## Fig. 2 / 3
-    h = figure ("visible", "off", "position", [0 0 1200 380]);
-    for ch = 1:3
-      subplot (1, 3, ch);
-      semilogy (S.theta_o, S.rgb(:,ch), "k.", "markersize", 4);
-      hold on;
-      for k = c.lobes
-        m = lafortune_import (fullfile (c.results, "fit", sprintf ("%s-inplane-%d.json", mat, k)));
-        semilogy (S.theta_o, lafortune_eval (m, S.wi, S.wo)(:,ch), "linewidth", 1.5);
-      endfor
-      hold off;
-      xlabel ("theta_o (degrees); the mirror direction is at -30", "interpreter", "none");
-      if (ch == 1)
-        ttl = sprintf ("%s: %s, theta_i = 30", mat, chn{ch});
-      else
-        ttl = sprintf ("%s channel", chn{ch});
-      endif
-      title (ttl, "interpreter", "none");
-      legend ([{"data"}, arrayfun(@(k) sprintf ("%d lobe(s)", k), c.lobes, "uniformoutput", false)],
-              "location", "northeast");
+    models = cell (1, nl);
+    for j = 1:nl
+      models{j} = lafortune_import (fullfile (c.results, "fit",
+                                              sprintf ("%s-inplane-%d.json", mat, c.lobes(j))));
     endfor
-    save_png (h, fullfile (fd, ["plane-" mat ".png"]));
-    ## Fig. 4 / 5
+    ## Fig. 2 / 3
+    done (plot_plane (b, models, "theta_i", 30, "max_angle", c.max_angle,
+                      "names", strcat (lobe_names, " fit"), "title", mat,
+                      "file", fullfile (fd, ["plane-" mat ".png"])));
+    ## BRDF Explorer's view and MERL's
+    done (plot_polar ({b, models{end}}, [15 30 45 60], "scale", "log",
+                      "names", {[mat ", measured"], sprintf("%s fit (in-plane)", lobe_names{end})},
+                      "file", fullfile (fd, ["polar-" mat ".png"])));
+    done (plot_slice ([{b}, models], 90, "names", [{"measured"}, strcat(lobe_names, " fit")],
+                      "file", fullfile (fd, ["slice-" mat ".png"])));
+    ## Fig. 4 / 5: in-plane fits (the paper's method) and hemisphere fits
     rd = fullfile (c.results, "render");
     ref = exrread (fullfile (rd, [mat "-measured.exr"]));
-    fits = jsondecode (fileread (fullfile (rd, [mat "-fits.json"])));
-    [rgb, stops] = img_tonemap (ref, "auto");
-    h = figure ("visible", "off", "position", [0 0 300 * (1 + numel (c.lobes)) 560]);
-    subplot (1, 1 + numel (c.lobes), 1);
-    show (rgb, "measured (rt_render)");
-    dscale = 0.1 * max (ref(:));
-    for k = c.lobes
-      img = exrread (fullfile (rd, sprintf ("%s-inplane-%d.exr", mat, k)));
-      im = img_tonemap (img, stops);
-      d = uint8 (255 * img_diff (ref, img, "scale", dscale));
-      ## the difference image as an inset, a third of the size, bottom right
-      hs = floor (rows (im) / 3); ws = floor (columns (im) / 3);
-      r = round (linspace (1, rows (d), hs)); q = round (linspace (1, columns (d), ws));
-      im(end-hs+1:end, end-ws+1:end, :) = d(r, q, :);
-      subplot (1, 1 + numel (c.lobes), 1 + k);
-      show (im, sprintf ("%d lobe(s): %.2f dB", k, fits.inplane(k).psnr_pov));
+    F = jsondecode (fileread (fullfile (rd, [mat "-fits.json"])));
+    imgs = {ref; ref};
+    psnr = zeros (2, nl);
+    mths = {"inplane", "hemisphere"};
+    for r = 1:2
+      for j = 1:nl
+        imgs{r,j+1} = exrread (fullfile (rd, sprintf ("%s-%s-%d.exr", mat, mths{r}, c.lobes(j))));
+        psnr(r,j) = F.(mths{r})(j).psnr_pov;
+      endfor
     endfor
-    save_png (h, fullfile (fd, ["renders-" mat ".png"]));
+    paper = NaN (2, nl);
+    key = strrep (mat, "-", "_");
+    if (isfield (c.paper_psnr, key))
+      paper(1,:) = c.paper_psnr.(key)(c.lobes);
+    endif
+    done (plot_renders (imgs, [{"measured"}, lobe_names], psnr, "paper", paper,
+                        "rows", {"in-plane fits", "hemisphere fits"},
+                        "width", min (256, max (180, columns (ref))),   # the paper's 256: 1:1
+                        "title", sprintf ("%s: rt_render (measured), POV-Ray (fits), %d x %d, %d spp",
+                                          mat, columns (ref), rows (ref), c.spp),
+                        "file", fullfile (fd, ["renders-" mat ".png"])));
+    Fi = jsondecode (fileread (fullfile (c.results, "fit", [mat ".json"])));
+    fits{i} = Fi.inplane;
+    if (! isfield (fits{i}, "history") && isfield (Fi.inplane, "errors"))
+      fits{i}.history = Fi.inplane.errors.inplane.rmse;
+    endif
   endfor
   ## fit error against run time
-  h = figure ("visible", "off", "position", [0 0 1000 400]);
-  for i = 1:numel (c.materials)
-    mat = c.materials{i};
-    F = jsondecode (fileread (fullfile (c.results, "fit", [mat ".json"])));
-    subplot (1, numel (c.materials), i);
-    for ch = 1:3
-      T = repro_trace (F.inplane.trace, ch);
-      loglog (max (T(:,1), 1e-3), T(:,2), "linewidth", 1.5);
-      hold on;
-    endfor
-    hold off;
-    xlabel ("elapsed time (s)"); ylabel ("rmse of the best fit so far");
-    title (sprintf ("%s: in-plane fit, 1 to %d lobes", mat, max (c.lobes)), "interpreter", "none");
-    legend (chn, "location", "northeast");
-  endfor
-  save_png (h, fullfile (fd, "fit-trace.png"));
+  done (plot_trace (fits, "names", c.materials,
+                    "title", sprintf ("In-plane fits, 1 to %d lobes: error against run time", max (c.lobes)),
+                    "file", fullfile (fd, "fit-trace.png")));
   ## render PSNR against run time
-  h = figure ("visible", "off", "position", [0 0 700 420]);
-  for i = 1:numel (c.materials)
+  spp_figure (c, fullfile (fd, "spp.png"));
+endfunction
+
+function done (hf)
+  close (hf);
+endfunction
+
+function spp_figure (c, file)
+  warning ("off", "Octave:gnuplot-graphics");
+  vis = "on";
+  if (isempty (getenv ("DISPLAY")))
+    vis = "off";
+  endif
+  n = numel (c.materials);
+  W = 80 + n * 400 + (n - 1) * 60 + 20;
+  h = figure ("visible", vis, "position", [40 40 W 420], "color", "w");
+  for i = 1:n
     mat = c.materials{i};
     P = jsondecode (fileread (fullfile (c.results, "spp", [mat ".json"])));
-    semilogx (P.time, P.psnr, "-o", "linewidth", 1.5);
-    hold on;
+    ax = axes ("parent", h, "position", [(80 + (i - 1) * 460) / W, 60 / 420, 400 / W, 310 / 420]);
+    semilogx (ax, P.time, P.psnr, "-o", "linewidth", 1.5);
     for j = 1:numel (P.spp)
-      text (P.time(j), P.psnr(j) + 0.6, sprintf ("%d", P.spp(j)));
+      text (ax, P.time(j) * 1.06, P.psnr(j), sprintf ("%d", P.spp(j)), "fontsize", 9);
     endfor
+    xlabel (ax, "render time (s); numbers: samples per pixel");
+    if (i == 1)
+      ylabel (ax, sprintf ("PSNR against %d spp (dB)", c.spp));
+    endif
+    title (ax, sprintf ("%s: measured data, rt_render", mat), "interpreter", "none");
   endfor
-  hold off;
-  xlabel ("render time (s)"); ylabel (sprintf ("PSNR against %d spp (dB)", c.spp));
-  title ("measured data, rt_render: PSNR against run time (labels: samples per pixel)", "interpreter", "none");
-  legend (c.materials, "location", "southeast");
-  save_png (h, fullfile (fd, "spp.png"));
-endfunction
-
-function show (rgb, ttl)
-  image (rgb);
-  axis image;
-  set (gca, "xtick", [], "ytick", []);
-  title (ttl, "interpreter", "none");
-endfunction
-
-function save_png (h, file)
   tmp = [file ".tmp.png"];
   print (h, "-dpngcairo", "-r90", tmp);
   close (h);
