@@ -73,15 +73,8 @@ function [R, gamma] = scene_slice (scene, material, ti, to, mode)
     [TI, TO] = ndgrid (ti, to);
     TI = TI(:); TO = TO(:);
   endif
-  s = sin (TI) .* sin (TO);
-  cphi = (cg - cos (TI) .* cos (TO)) ./ s;
-  cphi(s <= 0) = 1;
-  cphi = min (max (cphi, -1), 1);
-  sphi = sqrt (1 - cphi .^ 2);
-  wi = [sin(TI) .* cphi, sin(TI) .* sphi, cos(TI)];
-  wo = [sin(TO), zeros(size (TO)), cos(TO)];
+  [wi, wo] = slice_dirs (TI, TO, cg);
   ok = TI < pi/2 & TO < pi/2 & TI >= 0 & TO >= 0;
-  wi(ok,:) ./= sqrt (sum (wi(ok,:) .^ 2, 2));
   f = zeros (numel (TI), 3);
   if (any (ok))
     f(ok,:) = material_eval (material, wi(ok,:), wo(ok,:));
