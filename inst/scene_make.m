@@ -99,7 +99,8 @@ function scene = scene_make (name, varargin)
                     struct ("size", [256 256], "spp", 16, "seed", 1,
                             "camera", "orthographic", "light", "directional",
                             "light_direction", [], "irradiance", 1,
-                            "background", [0 0 0], "file", "", "resolution", [96 48]));
+                            "background", [0 0 0], "file", "", "resolution", [96 48],
+                            "up", "y", "normalize", true));
   [H, W] = check_size (opt.size);
   spp = opt.spp;
   if (! (isnumeric (spp) && isscalar (spp) && isreal (spp) && spp >= 1 && spp == fix (spp)))
@@ -130,8 +131,22 @@ function scene = scene_make (name, varargin)
   if (! isempty (opt.file) && ! strcmp (name, "mesh"))
     error ("lafortune:badOption", "scene_make: option FILE is for the scene \"mesh\" only");
   endif
+  if (! ischar (opt.up) || ! any (strcmpi (opt.up, {"y", "z"})))
+    error ("lafortune:badOption", "scene_make: UP must be \"y\" or \"z\"");
+  endif
+  if (! ((islogical (opt.normalize) || isnumeric (opt.normalize)) && isscalar (opt.normalize)
+         && any (opt.normalize == [0 1])))
+    error ("lafortune:badOption", "scene_make: NORMALIZE must be true or false");
+  endif
+  if ((strcmpi (opt.up, "z") || ! opt.normalize) && isempty (opt.file))
+    error ("lafortune:badOption",
+           "scene_make: options UP and NORMALIZE are for a mesh read from a FILE");
+  endif
 
   aspect = H / W;
+  fov = [];                                  # [] for 2 * atand (extent / 2 / dist)
+  ldist = 10;                                # point light: distance from the target
+  mesh_info = [];
   switch (name)
     case "sphere"
       objects = make_obj ("sphere", "center", [0 0 0], "radius", 1);
@@ -158,23 +173,29 @@ function scene = scene_make (name, varargin)
         if (! ischar (opt.file))
           error ("lafortune:badOption", "scene_make: FILE must be a file name");
         endif
-        [V, F, N] = mesh_read (opt.file);
+        [V, F, N, mesh_info] = mesh_read (opt.file);
+        [V, N, mesh_info] = mesh_place (V, N, mesh_info, opt.up, opt.normalize);
         lo = min (V, [], 1);
         hi = max (V, [], 1);
-        V = (V - (lo + hi) / 2) * (2 / max (hi - lo));
+        [eye, target, extent, fov] = mesh_frame (lo, hi, aspect);
+        ldist = 5 * max (hi - lo);           # 10 with "normalize"
       else
         [V, F, N] = mesh_torus (opt.resolution);
         a = 60 * pi / 180;                   # tilt the axis toward the camera
         Rx = [1 0 0; 0 cos(a) -sin(a); 0 sin(a) cos(a)];
         V = V * Rx.';
         N = N * Rx.';
+        lo = min (V, [], 1);
+        hi = max (V, [], 1);
+        eye = [0 0 5];
+        target = [0 0 0];
+        extent = 1.1 * max (2 * max (abs ([lo(2) hi(2)])), 2 * max (abs ([lo(1) hi(1)])) * aspect);
+        mesh_info = struct ("file", "", "format", "mesh_torus", "vertices", rows (V),
+                            "faces", rows (F), "polygons", rows (F), "triangles", rows (F),
+                            "degenerate", 0, "normals", "vertex", "split", 0, "filled", 0,
+                            "up", "y", "rotation", [1 0 0; 0 1 0; 0 0 1], "center", [0 0 0], "scale", 1);
       endif
       objects = make_obj ("mesh", "vertices", V, "faces", F, "normals", N);
-      lo = min (V, [], 1);
-      hi = max (V, [], 1);
-      eye = [0 0 5];
-      target = [0 0 0];
-      extent = 1.1 * max (2 * max (abs ([lo(2) hi(2)])), 2 * max (abs ([lo(1) hi(1)])) * aspect);
       ldir = [-1 1 1];
   endswitch
 
@@ -189,13 +210,16 @@ function scene = scene_make (name, varargin)
   ldir = double (ldir(:).') / norm (ldir);
   dist = norm (eye - target);
   camera = struct ("type", opt.camera, "eye", eye, "target", target, "up", [0 1 0],
-                   "extent", extent, "fov", 2 * atand (extent / 2 / dist));
+                   "extent", extent, "fov", fov);
+  if (isempty (fov))
+    camera.fov = 2 * atand (extent / 2 / dist);
+  endif
   E = double (E(:).');
   if (strcmp (opt.light, "directional"))
     light = struct ("type", "directional", "direction", ldir, "position", [],
                     "irradiance", E);
   else
-    d = 10;
+    d = ldist;
     light = struct ("type", "point", "direction", [], "position", target + d * ldir,
                     "irradiance", E * d ^ 2);
   endif
@@ -203,6 +227,7 @@ function scene = scene_make (name, varargin)
                   "seed", double (seed), "background", double (bg(:).'),
                   "camera", camera, "light", light);
   scene.objects = objects;
+  scene.mesh_info = mesh_info;
 endfunction
 
 function [H, W] = check_size (sz)
