@@ -22,9 +22,17 @@
 ## [96 48], i.e. 9216 triangles; [224 224] gives 100352).
 ## @item "mesh"
 ## a triangle mesh read with @code{mesh_read} from option @code{"file"} (PLY or
-## OBJ, e.g. the Stanford Happy Buddha @file{happy_vrip.ply} you download),
-## centred at the origin and scaled to a largest extent of 2; without a file,
-## the built-in torus.
+## OBJ, e.g. the Stanford Happy Buddha @file{happy_vrip.ply} you download);
+## without a file, the built-in torus.  The mesh is framed automatically,
+## wherever it lies and whatever its size: turned y up (option
+## @code{"up"}), centred at the origin and scaled to a largest side of 2
+## (option @code{"normalize"}), and seen by a camera fitted to its bounding
+## box: on the +z side of the box centre, looking at it, 5 half-sides (the
+## box's largest) away; the orthographic @code{extent}, and for
+## @code{"camera", "perspective"} the field of view, show the box's front
+## with a 10% margin for the image's shape.  The point light is 10
+## half-sides from the box centre.  The Happy Buddha thus fills 9/10 of the
+## paper's 256 x 512 view.
 ## @end table
 ##
 ## Options (name/value pairs):
@@ -57,12 +65,29 @@
 ## mesh file for the scene @code{"mesh"}.
 ## @item "resolution"
 ## [nu nv] of the built-in torus, default [96 48].
+## @item "up"
+## the mesh file's up axis: @code{"y"} (default) or @code{"z"}.  A z-up mesh
+## is rotated by -90 degrees about x, (x, y, z) -> (x, z, -y), so that its
+## z becomes the world's y and its -y side (the front in z-up tools such as
+## Blender) faces the camera; the camera keeps y as its up vector, so the
+## light directions mean the same for every mesh.
+## @item "normalize"
+## true (default): centre and scale the mesh as above; false: keep the
+## file's coordinates (the camera and the point light are fitted to them
+## all the same).
 ## @end table
 ##
 ## The struct (fields @code{name}, @code{width}, @code{height}, @code{spp},
 ## @code{seed}, @code{background}, @code{camera}, @code{light},
-## @code{objects}) is the one documented in HACKING.md; the orthographic
-## @code{extent} frames the objects with a margin for any aspect ratio.
+## @code{objects}, @code{mesh_info}) is the one documented in HACKING.md; the
+## orthographic @code{extent} frames the objects with a margin for any
+## aspect ratio.  For the scenes "mesh" and "torus", @code{mesh_info} is
+## the @var{info} of @code{mesh_read} (counts: @code{polygons},
+## @code{triangles}, @code{degenerate} triangles dropped, @code{faces},
+## @code{vertices}, vertex @code{normals} and @code{split}) with the fields
+## @code{up}, @code{rotation}, @code{center} and @code{scale}: the scene's
+## vertices are (V * rotation.' - center) * scale for the file's V; for the
+## other scenes it is empty.
 ## With no argument, the names of the scenes are returned.  An unknown scene
 ## gives the error @code{lafortune:unknownScene}, a bad option
 ## @code{lafortune:badOption}.
@@ -75,6 +100,8 @@
 ## img = rt_render (scene, model);
 ## imshow (img / max (img(:)));
 ## scene = scene_make ("mesh", "file", "happy_vrip.ply", "size", "paper", "spp", 128);
+## scene.mesh_info.degenerate               # triangles dropped
+## scene = scene_make ("mesh", "file", "part.obj", "up", "z", "camera", "perspective");
 ## @end group
 ## @end example
 ## @seealso{rt_render, mesh_read, mesh_torus, scene_slice}
@@ -308,11 +335,22 @@ endfunction
 %! fprintf (fid, "v 10 10 10\nv 14 10 10\nv 10 11 10\nv 10 10 12\nf 1 2 3\nf 1 2 4\n");
 %! fclose (fid);
 %! s = scene_make ("mesh", "file", f);
-%! delete (f);
 %! V = s.objects.vertices;
 %! assert (max (V) - min (V), [2 0.5 1], 1e-12);
 %! assert ((max (V) + min (V)) / 2, [0 0 0], 1e-12);
 %! assert (isempty (s.objects.normals));
+%! assert ([s.mesh_info.polygons s.mesh_info.degenerate s.mesh_info.scale], [2 0 0.5]);
+%! assert (s.mesh_info.center, [12 10.5 11]);
+%! ## the camera is fitted to the box: the same frame with "normalize", false
+%! t = scene_make ("mesh", "file", f, "normalize", false, "camera", "perspective");
+%! assert (t.objects.vertices(1,:), [10 10 10]);
+%! assert (t.camera.target, [12 10.5 11]);
+%! assert (t.camera.eye, [12 10.5 21]);
+%! assert (t.camera.extent, 2 * s.camera.extent);
+%! assert (t.camera.fov, s.camera.fov, 1e-12);
+%! delete (f);
+%! assert (isempty (scene_make ("sphere").mesh_info));
+%! assert (scene_make ("torus", "resolution", [8 4]).mesh_info.faces, 64);
 
 %!test
 %! s = scene_make ("sphere", "camera", "perspective", "light", "point", ...
@@ -339,6 +377,8 @@ endfunction
 %!error id=lafortune:badOption scene_make ("sphere", "file", "x.ply")
 %!error id=lafortune:badOption scene_make ("sphere", "colour", 1)
 %!error id=lafortune:meshReadNotFound scene_make ("mesh", "file", "/nonexistent/x.ply")
+%!error id=lafortune:badOption scene_make ("mesh", "file", "x.ply", "up", "-z")
+%!error id=lafortune:badOption scene_make ("torus", "normalize", false)
 
 %!demo
 %! ## the four built-in scenes, small and quick

@@ -337,7 +337,7 @@ function [cols, pos] = ply_binary_elem (body, pos, el, big, file)
     endif
   endfor
   nb = numel (body);
-  if (n * sum (csz(islist)) + sum (sz(! islist)) > nb - pos)   # the smallest records
+  if (n * (sum (csz(islist)) + sum (sz(! islist))) > nb - pos)   # the smallest records
     error ("lafortune:meshReadTruncated",
            "mesh_read: %s: PLY element '%s' declares %d records, the file ends before",
            file, el.name, n);
