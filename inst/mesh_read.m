@@ -250,3 +250,35 @@ endfunction
 %! try, mesh_read (g); error ("no error"); catch e, assert (e.identifier, "lafortune:meshReadIndex"); end
 %! confirm_recursive_rmdir (false, "local");
 %! rmdir (d, "s");
+
+%!test
+%! ## info: counts, a degenerate triangle dropped, split normals
+%! d = tempname (); mkdir (d);
+%! f = fullfile (d, "k.obj");
+%! fid = fopen (f, "w");
+%! fputs (fid, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvn 0 0 -1\nvn 0 -1 0\n");
+%! fputs (fid, "f 1//1 3//1 2//1\nf 1//2 2//2 4//2\nf 1//2 1//2 2//2\n");
+%! fclose (fid);
+%! [V, F, N, info] = mesh_read (f);
+%! assert ([info.polygons info.triangles info.degenerate info.faces], [3 3 1 2]);
+%! assert ([info.vertices info.split], [6 2]);
+%! assert (info.normals, "corner");
+%! assert (F, [1 3 2; 5 6 4]);
+%! assert (V(5:6,:), V(1:2,:));
+%! assert (N([1 2 3 4 5 6],:), [0 0 -1; 0 0 -1; 0 0 -1; 0 -1 0; 0 -1 0; 0 -1 0]);
+%! delete (f); rmdir (d);
+
+%!demo
+%! ## a flat-shaded OBJ cube: each corner of the cube gets three normals,
+%! ## so its 8 vertices become 24; the file's degenerate face is dropped
+%! f = [tempname() ".obj"];
+%! fid = fopen (f, "w");
+%! fprintf (fid, "v %d %d %d\n", [0 0 0; 1 0 0; 0 1 0; 1 1 0; 0 0 1; 1 0 1; 0 1 1; 1 1 1].');
+%! fprintf (fid, "vn %d %d %d\n", [0 0 -1; 0 0 1; 0 -1 0; 0 1 0; -1 0 0; 1 0 0].');
+%! Q = [1 3 4 2; 5 6 8 7; 1 2 6 5; 3 7 8 4; 1 5 7 3; 2 4 8 6];
+%! fprintf (fid, "f %d//%d %d//%d %d//%d %d//%d\n", [Q(:,1) (1:6)' Q(:,2) (1:6)' Q(:,3) (1:6)' Q(:,4) (1:6)'].');
+%! fprintf (fid, "f 1//1 1//1 2//1\n");
+%! fclose (fid);
+%! [V, F, N, info] = mesh_read (f)
+%! delete (f);
+%! trisurf (F, V(:,1), V(:,2), V(:,3)); axis equal;

@@ -120,17 +120,17 @@ function [V, F, N, info] = mesh_obj (bytes, file)
   F = mesh_fan (vi, ncorner);
 endfunction
 
-## Blank everything from a '#' to the end of its line.
+## Blank everything from a '#' to the end of its line (TXT ends in a newline).
 function txt = strip_comments (txt)
   h = find (txt == "#");
   if (isempty (h))
     return;
   endif
-  lineid = cumsum ([1, txt(1:end-1) == "\n"]);
-  fh = inf (lineid(end), 1);
-  fh(:) = accumarray (lineid(h).', h.', [lineid(end) 1], @min, Inf);
-  cut = (1:numel (txt)) >= fh(lineid)(:).' & txt != "\n";
-  txt(cut) = " ";
+  nl = find (txt == "\n");
+  [ln, i] = unique (lookup (nl, h), "first");   # lines with a '#': the first one
+  a = h(i);
+  e = nl(ln + 1) - 1;                            # the end of each such line
+  txt(ranges (a, e)) = " ";
 endfunction
 
 function i = relative (i, nbefore)
@@ -178,16 +178,21 @@ endfunction
 
 ## The text of lines (from character A(k) to the newline E(k)), joined.
 function s = line_text (txt, a, e)
+  s = txt(ranges (a, e));
+endfunction
+
+## The indices A(1):E(1), A(2):E(2), ... in one row (A(k) <= E(k)).
+function idx = ranges (a, e)
   if (isempty (a))
-    s = "";
+    idx = zeros (1, 0);
     return;
   endif
-  len = e - a + 1;                           # includes the newline
+  len = e - a + 1;
   idx = ones (1, sum (len));
   cs = cumsum (len);
   idx(1) = a(1);
   idx(cs(1:end-1) + 1) = a(2:end) - e(1:end-1);
-  s = txt(cumsum (idx));
+  idx = cumsum (idx);
 endfunction
 
 ## The first 3 numbers of each of the lines (text from A(k) to E(k), line
