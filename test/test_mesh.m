@@ -93,6 +93,13 @@
 %!  fclose (fid);
 %!endfunction
 
+%!function arch = ifelse_arch (fmt)
+%!  arch = "ieee-le";
+%!  if (strcmp (fmt, "binary_big_endian"))
+%!    arch = "ieee-be";
+%!  endif
+%!endfunction
+
 %!function check_mesh (V, F, N, info)
 %!  ## what every mesh from mesh_read satisfies
 %!  assert (columns (V) == 3 && rows (V) >= 1 && all (isfinite (V(:))));
@@ -179,6 +186,48 @@
 %!     assert (isempty (N));
 %!     assert (info.normals, "none");
 %!   endif
+%! endfor
+
+%!test
+%! ## PLY faces of varying length with other properties around the list,
+%! ## a 2-byte count, in every encoding (the record-by-record path)
+%! V = [0 0 0; 1 0 0; 1 1 0; 0 1 0; 0.5 1.5 0; -0.5 0.5 0];
+%! P = {[1 2 3 4], [1 4 6], [2 3 5 4 1]};
+%! Fq = [1 2 3; 1 3 4; 1 4 6; 2 3 5; 2 5 4; 2 4 1];
+%! for fmt = {"ascii", "binary_little_endian", "binary_big_endian"}
+%!   f = fullfile (d, ["var_" fmt{1} ".ply"]);
+%!   fid = fopen (f, "w");
+%!   fprintf (fid, "ply\nformat %s 1.0\nelement vertex 6\nproperty double x\n", fmt{1});
+%!   fprintf (fid, "property double y\nproperty double z\nelement face 3\nproperty uchar flags\n");
+%!   fprintf (fid, "property list ushort uint vertex_indices\nproperty float quality\nend_header\n");
+%!   if (strcmp (fmt{1}, "ascii"))
+%!     fprintf (fid, "%g %g %g\n", V.');
+%!     for k = 1:3
+%!       fprintf (fid, "%d %d%s 0.5\n", k, numel (P{k}), sprintf (" %d", P{k} - 1));
+%!     endfor
+%!   else
+%!     arch = ifelse_arch (fmt{1});
+%!     fwrite (fid, V.', "float64", 0, arch);
+%!     for k = 1:3
+%!       fwrite (fid, k, "uint8", 0, arch);
+%!       fwrite (fid, numel (P{k}), "uint16", 0, arch);
+%!       fwrite (fid, P{k} - 1, "uint32", 0, arch);
+%!       fwrite (fid, 0.5, "float32", 0, arch);
+%!     endfor
+%!   endif
+%!   fclose (fid);
+%!   [W, F, ~, info] = mesh_read (f);
+%!   assert (W, V);
+%!   assert (F, Fq);
+%!   assert ([info.polygons info.triangles], [3 6]);
+%!   ## a bad count in the middle, and the data cut short
+%!   b = get (f);
+%!   if (strcmp (fmt{1}, "ascii"))
+%!     put (f, strrep (char (b), "2 3 0 3 5", "2 -3 0 3 5"));
+%!     assert (read_error (f), "lafortune:meshReadFormat");
+%!   endif
+%!   put (f, b(1:end-6));
+%!   assert (read_error (f), "lafortune:meshReadTruncated");
 %! endfor
 
 %!test

@@ -130,7 +130,7 @@ function txt = strip_comments (txt)
   [ln, i] = unique (lookup (nl, h), "first");   # lines with a '#': the first one
   a = h(i);
   e = nl(ln + 1) - 1;                            # the end of each such line
-  txt(ranges (a, e)) = " ";
+  txt(index_ranges (a, e)) = " ";
 endfunction
 
 function i = relative (i, nbefore)
@@ -178,21 +178,7 @@ endfunction
 
 ## The text of lines (from character A(k) to the newline E(k)), joined.
 function s = line_text (txt, a, e)
-  s = txt(ranges (a, e));
-endfunction
-
-## The indices A(1):E(1), A(2):E(2), ... in one row (A(k) <= E(k)).
-function idx = ranges (a, e)
-  if (isempty (a))
-    idx = zeros (1, 0);
-    return;
-  endif
-  len = e - a + 1;
-  idx = ones (1, sum (len));
-  cs = cumsum (len);
-  idx(1) = a(1);
-  idx(cs(1:end-1) + 1) = a(2:end) - e(1:end-1);
-  idx = cumsum (idx);
+  s = txt(index_ranges (a, e));
 endfunction
 
 ## The first 3 numbers of each of the lines (text from A(k) to E(k), line

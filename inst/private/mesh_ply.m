@@ -172,16 +172,14 @@ function [V, F, N, info] = mesh_ply (bytes, file)
   endif
 endfunction
 
-## 0-based PLY polygons (matrix: one polygon per row, or a cell of rows) to
-## 1-based triangles, with counts and ranges checked.
+## 0-based PLY polygons (struct: lens, one per polygon, and vals, all the
+## indices in order) to 1-based triangles, with counts and ranges checked.
 function F = ply_faces (polys, nv, file)
-  if (iscell (polys))
-    lens = cellfun (@numel, polys(:));
-    idx = [polys{:}];
-  else
-    lens = repmat (columns (polys), rows (polys), 1);
-    idx = polys.';
+  if (isempty (polys) || isempty (polys.lens))
+    error ("lafortune:meshReadCount", "mesh_read: %s: the mesh has no faces", file);
   endif
+  lens = polys.lens;
+  idx = polys.vals(:);
   if (isempty (lens))
     error ("lafortune:meshReadCount", "mesh_read: %s: the mesh has no faces", file);
   endif
@@ -190,7 +188,6 @@ function F = ply_faces (polys, nv, file)
     error ("lafortune:meshReadCount",
            "mesh_read: %s: face %d has %d vertices, expected at least 3", file, i, lens(i));
   endif
-  idx = idx(:);
   bad = find (idx != fix (idx) | idx < 0 | idx >= nv, 1);
   if (! isempty (bad))
     error ("lafortune:meshReadIndex",
@@ -226,8 +223,8 @@ function n = type_bytes (t)
 endfunction
 
 ## One element of an ASCII PLY body.  COLS{p} is count x 1 (scalar property)
-## or a cell of per-record rows (list property; a matrix when all records
-## have the same length).
+## or a struct with fields lens (count x 1) and vals (all the items, record
+## after record) (list property).
 function [cols, pos] = ply_ascii_elem (vals, pos, el, file)
   np = numel (el.props);
   n = el.count;
@@ -267,7 +264,8 @@ function [cols, pos] = ply_ascii_elem (vals, pos, el, file)
     if (same)
       for p = 1:np
         if (islist(p))
-          cols{p} = M(starts(p)+2:starts(p+1),:).';
+          cols{p} = struct ("lens", repmat (len(p) - 1, n, 1),
+                            "vals", reshape (M(starts(p)+2:starts(p+1),:), [], 1));
         else
           cols{p} = M(starts(p)+1,:).';
         endif
@@ -276,40 +274,94 @@ function [cols, pos] = ply_ascii_elem (vals, pos, el, file)
       return;
     endif
   endif
-  ## general path: lists of varying length, one record at a time
+  ## general path: lists of varying length
+  cw = double (islist);                      # values of a list's count
+  [off, cnt, pos] = ply_walk (repmat ({vals(pos+1:end)}, 1, np), n, islist, cw,
+                              ones (1, np), pos, numel (vals), el, file);
   for p = 1:np
-    cols{p} = cell (n, 1);
+    if (islist(p))
+      k = cnt(:,p) > 0;
+      cols{p} = struct ("lens", cnt(:,p),
+                        "vals", vals(index_ranges (off(k,p) + 2, off(k,p) + 1 + cnt(k,p))).');
+    else
+      cols{p} = vals(off(:,p) + 1).';
+    endif
   endfor
-  for r = 1:n
-    for p = 1:np
-      if (pos + 1 > numel (vals))
-        error ("lafortune:meshReadTruncated",
-               "mesh_read: %s: PLY element '%s' declares %d records, the file ends in record %d",
-               file, el.name, n, r);
+endfunction
+
+## Where each record's properties start, records of varying length: OFF
+## (n x np, 0-based offsets in units: values or bytes), the list lengths CNT
+## (n x np) and the offset Q after the element.  COUNTAT{p} holds for a
+## list p the count that would start at each unit from the element's start
+## Q; CW and IW are the units of a count and of an item (or scalar); TOTAL
+## the units in the data.  One pass in record order, with every count and
+## the end of the data checked.
+function [off, cnt, q] = ply_walk (countat, n, islist, cw, iw, q, total, el, file)
+  np = numel (islist);
+  q0 = q;
+  need = iw;                                 # units a property needs to start
+  need(islist) = cw(islist);
+  bad = cell (1, np);
+  for p = find (islist)                      # a bad count ends the walk (q = Inf)
+    c = double (countat{p});
+    bad{p} = ! (c >= 0 & c == fix (c));
+    c(bad{p}) = Inf;
+    countat{p} = c;
+  endfor
+  off = NaN (n, np);
+  stop = 0;                                  # the record the walk stopped in
+  if (np == 1)                               # the usual face element: the list alone
+    c = countat{1};
+    for r = 1:n
+      if (q + need > total)
+        stop = r;
+        break;
       endif
-      if (islist(p))
-        m = vals(pos + 1);
-        if (m < 0 || m != fix (m))
-          error ("lafortune:meshReadFormat",
-                 "mesh_read: %s: PLY element '%s' record %d: bad list length %g",
-                 file, el.name, r, m);
+      off(r) = q;
+      q += cw + c(q - q0 + 1) * iw;
+    endfor
+  else
+    for r = 1:n
+      for p = 1:np
+        if (q + need(p) > total)
+          stop = r;
+          break;
         endif
-        if (pos + 1 + m > numel (vals))
-          error ("lafortune:meshReadTruncated",
-                 "mesh_read: %s: PLY element '%s' declares %d records, the file ends in record %d",
-                 file, el.name, n, r);
+        off(r,p) = q;
+        if (islist(p))
+          q += cw(p) + countat{p}(q - q0 + 1) * iw(p);
+        else
+          q += iw(p);
         endif
-        cols{p}{r} = vals(pos + 1 + (1:m));
-        pos += 1 + m;
-      else
-        cols{p}{r} = vals(pos + 1);
-        pos += 1;
+      endfor
+      if (stop)
+        break;
       endif
     endfor
+  endif
+  if (! stop && q > total)
+    stop = n;
+  endif
+  cnt = zeros (n, np);
+  for p = find (islist)
+    k = ! isnan (off(:,p));
+    cnt(k,p) = countat{p}(off(k,p) - q0 + 1);
+    i = find (bad{p}(off(k,p) - q0 + 1), 1);
+    if (! isempty (i))                       # a bad count stopped the walk
+      error ("lafortune:meshReadFormat",
+             "mesh_read: %s: PLY element '%s' record %d: bad list length (expected an integer >= 0)",
+             file, el.name, i);
+    endif
   endfor
-  for p = find (! islist)
-    cols{p} = [cols{p}{:}].';
-  endfor
+  if (stop)
+    ply_truncated (el, stop, file);
+  endif
+endfunction
+
+function ply_truncated (el, r, file)
+  error ("lafortune:meshReadTruncated",
+         "mesh_read: %s: PLY element '%s' declares %d records, the file ends in record %d",
+         file, el.name, el.count, r);
 endfunction
 
 function x = bytes_to (b, t, big)
@@ -320,6 +372,7 @@ function x = bytes_to (b, t, big)
   x = double (typecast (b(:), t));
 endfunction
 
+## One element of a binary PLY body, COLS as for ply_ascii_elem.
 function [cols, pos] = ply_binary_elem (body, pos, el, big, file)
   np = numel (el.props);
   n = el.count;
@@ -374,8 +427,8 @@ function [cols, pos] = ply_binary_elem (body, pos, el, big, file)
       for p = 1:np
         if (islist(p))
           B = M(starts(p) + csz(p) + (1:cnt(p)*sz(p)),:);
-          cols{p} = reshape (bytes_to (reshape (B, sz(p), []), el.props(p).type, big),
-                             cnt(p), n).';
+          cols{p} = struct ("lens", repmat (cnt(p), n, 1),
+                            "vals", bytes_to (reshape (B, sz(p), []), el.props(p).type, big));
         else
           cols{p} = bytes_to (M(starts(p) + (1:sz(p)),:), el.props(p).type, big);
         endif
@@ -384,41 +437,37 @@ function [cols, pos] = ply_binary_elem (body, pos, el, big, file)
       return;
     endif
   endif
-  ## general path: lists of varying length, one record at a time
+  ## general path: lists of varying length
+  countat = cell (1, np);
+  for p = find (islist)
+    countat{p} = count_at (body(pos+1:end), el.props(p).ctype, csz(p), big);
+  endfor
+  [off, cnt, pos] = ply_walk (countat, n, islist, csz, sz, pos, nb, el, file);
   for p = 1:np
-    cols{p} = cell (n, 1);
-  endfor
-  for r = 1:n
-    for p = 1:np
-      if (islist(p))
-        if (pos + csz(p) > nb)
-          error ("lafortune:meshReadTruncated",
-                 "mesh_read: %s: PLY element '%s' declares %d records, the file ends in record %d",
-                 file, el.name, n, r);
-        endif
-        m = bytes_to (body(pos + (1:csz(p))).', el.props(p).ctype, big);
-        pos += csz(p);
-        if (m < 0 || pos + m * sz(p) > nb)
-          error ("lafortune:meshReadTruncated",
-                 "mesh_read: %s: PLY element '%s' declares %d records, the file ends in record %d",
-                 file, el.name, n, r);
-        endif
-        cols{p}{r} = bytes_to (reshape (body(pos + (1:m*sz(p))), sz(p), m),
-                               el.props(p).type, big).';
-        pos += m * sz(p);
-      else
-        if (pos + sz(p) > nb)
-          error ("lafortune:meshReadTruncated",
-                 "mesh_read: %s: PLY element '%s' declares %d records, the file ends in record %d",
-                 file, el.name, n, r);
-        endif
-        cols{p}{r} = bytes_to (body(pos + (1:sz(p))).', el.props(p).type, big);
-        pos += sz(p);
-      endif
-    endfor
-  endfor
-  for p = find (! islist)
-    cols{p} = [cols{p}{:}].';
+    t = el.props(p).type;
+    if (islist(p))
+      k = cnt(:,p) > 0;
+      B = body(index_ranges (off(k,p) + csz(p) + 1, off(k,p) + csz(p) + cnt(k,p) * sz(p)));
+      cols{p} = struct ("lens", cnt(:,p), "vals", bytes_to (reshape (B, sz(p), []), t, big));
+    else
+      cols{p} = bytes_to (reshape (body(off(:,p).' + (1:sz(p)).'), sz(p), n), t, big);
+    endif
   endfor
 endfunction
 
+## The count of type T (CSZ bytes) that would start at each byte of BODY
+## (the bytes themselves for a 1-byte type).
+function c = count_at (body, t, csz, big)
+  nb = numel (body);
+  if (csz == 1)
+    c = typecast (body(:), t);               # 1 byte each
+    return;
+  endif
+  c = zeros (nb, 1);
+  for o = 0:csz-1
+    k = floor ((nb - o) / csz);
+    if (k > 0)
+      c(o + 1 + csz * (0:k-1)) = bytes_to (reshape (body(o + (1:k*csz)), csz, k), t, big);
+    endif
+  endfor
+endfunction
