@@ -98,9 +98,9 @@ function [V, F, N, info] = mesh_obj (bytes, file)
   ## negative indices: relative to the vertices / texture coordinates /
   ## normals read so far
   ln = fl(line_of_tok);
-  vi = relative (vi, cumsum (isv)(ln));
-  ti = relative (ti, cumsum (ist)(ln));
-  ni = relative (ni, cumsum (isn)(ln));
+  vi = relative (vi, isv, ln);
+  ti = relative (ti, ist, ln);
+  ni = relative (ni, isn, ln);
   nv = rows (V);
   check_range (vi, true (size (vi)), nv, "vertex", file);
   check_range (ti, hast, nnz (ist), "texture coordinate", file);
@@ -133,9 +133,14 @@ function txt = strip_comments (txt)
   txt(index_ranges (a, e)) = " ";
 endfunction
 
-function i = relative (i, nbefore)
+## Negative indices I (of corners on the lines LN) counted back from the
+## last of the lines flagged in ISX before the corner's line.
+function i = relative (i, isx, ln)
   neg = i < 0;
-  i(neg) = nbefore(neg) + i(neg) + 1;
+  if (any (neg))
+    nbefore = cumsum (isx);
+    i(neg) = nbefore(ln(neg)) + i(neg) + 1;
+  endif
 endfunction
 
 function check_range (i, used, n, what, file)

@@ -252,7 +252,7 @@ function [cols, pos] = ply_ascii_elem (vals, pos, el, file)
     endif
     off += len(p);
   endfor
-  ## (lists shorter further on: the general path below)
+  ## (lists of other lengths further on: the general path below)
   if (ok && all (len >= 1) && all (len == fix (len)) && pos + sum (len) * n <= numel (vals))
     rec = sum (len);
     M = reshape (vals(pos + (1:rec*n)), rec, n);
@@ -413,7 +413,7 @@ function [cols, pos] = ply_binary_elem (body, pos, el, big, file)
     endif
     off += len(p);
   endfor
-  ## (lists shorter further on: the general path below)
+  ## (lists of other lengths further on: the general path below)
   if (ok && all (cnt >= 0) && pos + sum (len) * n <= nb)
     rec = sum (len);
     M = reshape (body(pos + (1:rec*n)), rec, n);
