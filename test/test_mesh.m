@@ -282,6 +282,36 @@
 %! assert (N, Vn ./ sqrt (sum (Vn .^ 2, 2)), 1e-12);
 
 %!test
+%! ## rendered, the split flat-shaded cube looks exactly like the cube
+%! ## without normals (shaded with its face normals); averaging the corner
+%! ## normals would round it
+%! a = 0.5;  b = 0.7;
+%! R = [1 0 0; 0 cos(a) -sin(a); 0 sin(a) cos(a)] * [cos(b) 0 sin(b); 0 1 0; -sin(b) 0 cos(b)];
+%! [x, y, z] = ndgrid (0:1, 0:1, 0:1);
+%! V = ([x(:) y(:) z(:)] - 0.5) * R.';
+%! Q = [1 3 4 2; 5 6 8 7; 1 2 6 5; 3 7 8 4; 1 5 7 3; 2 4 8 6];
+%! Nf = [0 0 -1; 0 0 1; 0 -1 0; 0 1 0; -1 0 0; 1 0 0] * R.';
+%! f = fullfile (d, "cube_n.obj");
+%! g = fullfile (d, "cube_0.obj");
+%! s = sprintf ("v %.17g %.17g %.17g\n", V.');
+%! t = [s sprintf("vn %.17g %.17g %.17g\n", Nf.')];
+%! for k = 1:6
+%!   t = [t sprintf("f %d//%d %d//%d %d//%d %d//%d\n", [Q(k,:); k k k k])];
+%!   s = [s sprintf("f %d %d %d %d\n", Q(k,:))];
+%! endfor
+%! put (f, t);
+%! put (g, s);
+%! m = struct ("rho_d", [0.3 0.3 0.3], "Cxy", [-1 -1 -1], "Cz", [1 1 1], "e", [20 20 20]);
+%! sn = scene_make ("mesh", "file", f, "size", [24 24], "spp", 1, "light_direction", [-1 2 3]);
+%! s0 = scene_make ("mesh", "file", g, "size", [24 24], "spp", 1, "light_direction", [-1 2 3]);
+%! assert (sn.mesh_info.split, 16);
+%! assert (isempty (s0.objects.normals));
+%! a = rt_render (sn, m, "progress", false);
+%! b = rt_render (s0, m, "progress", false);
+%! assert (nnz (any (a > 0, 3)) > 100);
+%! assert (a, b, 1e-9 * max (b(:)));
+
+%!test
 %! ## normals on some corners only: ignored, stated in info
 %! f = fullfile (d, "partial.obj");
 %! put (f, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\nf 2 4 3\n");
