@@ -220,7 +220,8 @@ function scene = scene_make (name, varargin)
         mesh_info = struct ("file", "", "format", "mesh_torus", "vertices", rows (V),
                             "faces", rows (F), "polygons", rows (F), "triangles", rows (F),
                             "degenerate", 0, "normals", "vertex", "split", 0, "filled", 0,
-                            "up", "y", "rotation", [1 0 0; 0 1 0; 0 0 1], "center", [0 0 0], "scale", 1);
+                            "up", "y", "rotation", [1 0 0; 0 1 0; 0 0 1],
+                            "center", [0 0 0], "scale", 1);
       endif
       objects = make_obj ("mesh", "vertices", V, "faces", F, "normals", N);
       ldir = [-1 1 1];
