@@ -3,6 +3,7 @@
 
 ## -*- texinfo -*-
 ## @deftypefn  {lafortune} {[@var{V}, @var{F}, @var{N}] =} mesh_read (@var{file})
+## @deftypefnx {lafortune} {[@var{V}, @var{F}, @var{N}, @var{info}] =} mesh_read (@var{file})
 ## Read a triangle mesh from a PLY or Wavefront OBJ file.
 ##
 ## @var{V} is the V x 3 array of vertex positions, @var{F} the F x 3 array of
@@ -16,36 +17,63 @@
 ## properties @code{x}, @code{y}, @code{z} (any scalar type) and may have
 ## @code{nx}, @code{ny}, @code{nz}; other properties and other elements are
 ## skipped.  Faces are the list property @code{vertex_indices} (or
-## @code{vertex_index}) of the element @code{face} (0-based).
+## @code{vertex_index}) of the element @code{face} (0-based).  The header
+## must be printable ASCII.
 ##
-## @strong{OBJ}: lines @code{v x y z [w]}, @code{vn x y z} and
-## @code{f} with corners in the forms @code{v}, @code{v/t}, @code{v/t/n} and
-## @code{v//n}; negative indices count back from the last vertex (normal)
-## read so far.  Vertex normals are per vertex: a vertex referenced with
-## several normals gets their normalised mean; when some face corner has no
-## normal, @var{N} is empty.  Other statements (@code{vt}, @code{g},
-## @code{usemtl}, comments @dots{}) are ignored.
+## @strong{OBJ}: lines @code{v x y z [w]}, @code{vt}, @code{vn x y z} and
+## @code{f} with corners in the forms @code{v}, @code{v/vt}, @code{v//vn}
+## and @code{v/vt/vn}; negative indices count back from the last vertex
+## (texture coordinate, normal) read so far; @code{#} starts a comment.
+## Texture coordinates are checked but not returned.  Normals: when every
+## face corner has one, a vertex that all its corners give the same normal
+## (after normalisation) gets it; a vertex whose corners give different
+## normals (a crease, a flat-shaded face) is @emph{split}: one copy of the
+## vertex per distinct normal, the copies appended after the file's
+## vertices, so that the surface is shaded as the file says.  When only some
+## corners have a normal the normals are ignored and @var{N} is empty.
+## Other statements (@code{g}, @code{o}, @code{usemtl}, @code{s} @dots{})
+## are ignored.
+##
+## @strong{Clean-up}: triangles with a repeated vertex index or zero area
+## (collinear or coincident corners: |AB x AC| <= 4 eps |AB| |AC|) are
+## dropped.  Normals are scaled to unit length; a zero-length one is replaced
+## by the area-weighted mean of the normals of the triangles around the
+## vertex.
+##
+## @var{info} is a struct with the fields @code{file}, @code{format}
+## (@qcode{"obj"}, @qcode{"ply ascii"}, @qcode{"ply binary_little_endian"}
+## or @qcode{"ply binary_big_endian"}), @code{polygons} (faces in the file),
+## @code{triangles} (after fan triangulation), @code{degenerate} (triangles
+## dropped), @code{faces} (rows of @var{F}), @code{vertices} (rows of
+## @var{V}), @code{normals} (@qcode{"none"}, @qcode{"vertex"},
+## @qcode{"corner"}: per-corner normals, vertices split, or
+## @qcode{"ignored"}), @code{split} (vertices added by splitting) and
+## @code{filled} (zero-length normals replaced).
 ##
 ## The format is taken from the extension (@file{.ply}, @file{.obj}, any
 ## case), else from the first bytes (@code{ply}).  Nothing is written.
 ##
-## Errors (identifiers): @code{lafortune:meshReadNotFound} (no such file),
+## Every malformed file gives an error with one of these identifiers:
+## @code{lafortune:meshReadNotFound} (no such file),
 ## @code{lafortune:meshReadFormat} (unknown format, malformed header or
-## line), @code{lafortune:meshReadTruncated} (less data than the header
-## declares), @code{lafortune:meshReadCount} (more data than declared, a face
-## with fewer than 3 corners, no vertices or no faces),
-## @code{lafortune:meshReadIndex} (a vertex or normal index out of range).
+## line, non-ASCII header, non-finite coordinates or normals),
+## @code{lafortune:meshReadTruncated} (less data than the header declares),
+## @code{lafortune:meshReadCount} (more data than declared, a face with
+## fewer than 3 corners, no vertices, no faces, or only degenerate ones),
+## @code{lafortune:meshReadIndex} (a vertex, texture or normal index out of
+## range).
 ##
 ## @example
 ## @group
-## [V, F, N] = mesh_read ("happy_vrip.ply");   # Stanford Happy Buddha
+## [V, F, N, info] = mesh_read ("happy_vrip.ply");   # Stanford Happy Buddha
+## info.degenerate                                  # triangles dropped
 ## scene = scene_make ("mesh", "file", "happy_vrip.ply");
 ## @end group
 ## @end example
 ## @seealso{scene_make, mesh_torus, rt_render}
 ## @end deftypefn
 
-function [V, F, N] = mesh_read (file)
+function [V, F, N, info] = mesh_read (file)
   if (nargin != 1)
     print_usage ();
   endif
@@ -67,567 +95,17 @@ function [V, F, N] = mesh_read (file)
   if (strcmp (ext, ".ply") || (! strcmp (ext, ".obj") && numel (bytes) >= 4
                                 && all (bytes(1:3) == uint8 ("ply"))
                                 && any (bytes(4) == uint8 ([10 13]))))
-    [V, F, N] = read_ply (bytes, file);
+    [V, F, N, info] = mesh_ply (bytes, file);
   elseif (strcmp (ext, ".obj"))
-    [V, F, N] = read_obj (char (bytes), file);
+    [V, F, N, info] = mesh_obj (bytes, file);
   else
     error ("lafortune:meshReadFormat",
            "mesh_read: %s: unknown mesh format (expected a .ply or .obj file)", file);
   endif
-endfunction
-
-## ---------------------------------------------------------------- PLY
-function [V, F, N] = read_ply (bytes, file)
-  ## header: up to and including the line "end_header"
-  hend = strfind (char (bytes(1:min (end, 65536))), "end_header");
-  if (numel (bytes) < 4 || ! all (bytes(1:3) == uint8 ("ply")) || isempty (hend))
-    error ("lafortune:meshReadFormat",
-           "mesh_read: %s: not a PLY file (missing 'ply' magic or 'end_header')", file);
-  endif
-  p = hend(1) + numel ("end_header");
-  while (p <= numel (bytes) && bytes(p) == 13)   # tolerate CR LF
-    p++;
-  endwhile
-  if (p > numel (bytes) || bytes(p) != 10)
-    error ("lafortune:meshReadTruncated", "mesh_read: %s: file ends in the PLY header", file);
-  endif
-  header = strsplit (strrep (char (bytes(1:hend(1)-1)), "\r", ""), "\n");
-  body = bytes(p+1:end);
-
-  fmt = "";
-  elems = struct ("name", {}, "count", {}, "props", {});
-  for k = 2:numel (header)
-    w = strsplit (strtrim (header{k}));
-    if (isempty (w{1}) || any (strcmp (w{1}, {"comment", "obj_info"})))
-      continue;
-    endif
-    switch (w{1})
-      case "format"
-        if (numel (w) < 2 || ! any (strcmp (w{2}, {"ascii", "binary_little_endian", ...
-                                                   "binary_big_endian"})))
-          error ("lafortune:meshReadFormat",
-                 "mesh_read: %s: unknown PLY format line '%s' (expected ascii, binary_little_endian or binary_big_endian)",
-                 file, header{k});
-        endif
-        fmt = w{2};
-      case "element"
-        c = str2double (w(3:end));
-        if (numel (w) != 3 || ! isfinite (c) || c < 0 || c != fix (c))
-          error ("lafortune:meshReadFormat", "mesh_read: %s: bad PLY line '%s'",
-                 file, header{k});
-        endif
-        elems(end+1) = struct ("name", w{2}, "count", c,
-                               "props", struct ("name", {}, "list", {}, "ctype", {},
-                                                "type", {}));
-      case "property"
-        if (isempty (elems))
-          error ("lafortune:meshReadFormat",
-                 "mesh_read: %s: PLY property before any element", file);
-        endif
-        if (numel (w) == 5 && strcmp (w{2}, "list"))
-          pr = struct ("name", w{5}, "list", true, "ctype", ply_type (w{3}, file),
-                       "type", ply_type (w{4}, file));
-        elseif (numel (w) == 3)
-          pr = struct ("name", w{3}, "list", false, "ctype", "", "type", ply_type (w{2}, file));
-        else
-          error ("lafortune:meshReadFormat", "mesh_read: %s: bad PLY line '%s'",
-                 file, header{k});
-        endif
-        elems(end).props(end+1) = pr;
-      otherwise
-        error ("lafortune:meshReadFormat",
-               "mesh_read: %s: unknown PLY header line '%s'", file, header{k});
-    endswitch
-  endfor
-  if (isempty (fmt))
-    error ("lafortune:meshReadFormat", "mesh_read: %s: PLY header has no format line", file);
-  endif
-  iv = find (strcmp ({elems.name}, "vertex"), 1);
-  jf = find (strcmp ({elems.name}, "face"), 1);
-  if (isempty (iv) || isempty (jf))
-    error ("lafortune:meshReadCount",
-           "mesh_read: %s: PLY file needs a 'vertex' and a 'face' element", file);
-  endif
-  vn = {elems(iv).props.name};
-  if (! all (ismember ({"x", "y", "z"}, vn)))
-    error ("lafortune:meshReadFormat",
-           "mesh_read: %s: PLY vertex element needs properties x, y, z", file);
-  endif
-  fl = find (ismember ({elems(jf).props.name}, {"vertex_indices", "vertex_index"})
-             & [elems(jf).props.list], 1);
-  if (isempty (fl))
-    error ("lafortune:meshReadFormat",
-           "mesh_read: %s: PLY face element needs a list property vertex_indices", file);
-  endif
-
-  if (strcmp (fmt, "ascii"))
-    [vals, nread, ~, nextidx] = sscanf (char (body), "%f");
-    if (nextidx <= numel (body) && ! all (isspace (char (body(nextidx:end)))))
-      error ("lafortune:meshReadFormat",
-             "mesh_read: %s: non-numeric data in the PLY body at byte %d",
-             file, p + nextidx);
-    endif
-    vals = vals(:).';
-    pos = 0;
-    for k = 1:numel (elems)
-      [cols, pos] = ply_ascii_elem (vals, pos, elems(k), file);
-      data{k} = cols;
-    endfor
-    if (pos < numel (vals))
-      error ("lafortune:meshReadCount",
-             "mesh_read: %s: %d values after the last PLY element (header counts too small?)",
-             file, numel (vals) - pos);
-    endif
-  else
-    big = strcmp (fmt, "binary_big_endian");
-    pos = 0;
-    for k = 1:numel (elems)
-      [cols, pos] = ply_binary_elem (body, pos, elems(k), big, file);
-      data{k} = cols;
-    endfor
-    rest = body(pos+1:end);
-    if (any (! ismember (rest, uint8 ([0 9 10 13 32]))))
-      error ("lafortune:meshReadCount",
-             "mesh_read: %s: %d bytes after the last PLY element (header counts too small?)",
-             file, numel (rest));
-    endif
-  endif
-
-  vd = data{iv};
-  V = [vd{strcmp (vn, "x")}(:), vd{strcmp (vn, "y")}(:), vd{strcmp (vn, "z")}(:)];
-  N = [];
-  if (all (ismember ({"nx", "ny", "nz"}, vn)))
-    N = [vd{strcmp (vn, "nx")}(:), vd{strcmp (vn, "ny")}(:), vd{strcmp (vn, "nz")}(:)];
-  endif
-  F = fan (data{jf}{fl}, rows (V), file);
-  [V, N] = finish_vertices (V, N, file);
-endfunction
-
-function t = ply_type (s, file)
-  names = {"char", "int8", "uchar", "uint8", "short", "int16", "ushort", "uint16", ...
-           "int", "int32", "uint", "uint32", "float", "float32", "double", "float64"};
-  types = {"int8", "int8", "uint8", "uint8", "int16", "int16", "uint16", "uint16", ...
-           "int32", "int32", "uint32", "uint32", "single", "single", "double", "double"};
-  i = find (strcmp (s, names), 1);
-  if (isempty (i))
-    error ("lafortune:meshReadFormat", "mesh_read: %s: unknown PLY type '%s'", file, s);
-  endif
-  t = types{i};
-endfunction
-
-function n = type_bytes (t)
-  switch (t)
-    case {"int8", "uint8"}
-      n = 1;
-    case {"int16", "uint16"}
-      n = 2;
-    case {"int32", "uint32", "single"}
-      n = 4;
-    otherwise
-      n = 8;
-  endswitch
-endfunction
-
-## One element of an ASCII PLY body.  COLS{p} is count x 1 (scalar property)
-## or a cell of per-record rows (list property; a matrix when all records
-## have the same length).
-function [cols, pos] = ply_ascii_elem (vals, pos, el, file)
-  np = numel (el.props);
-  n = el.count;
-  cols = cell (1, np);
-  if (n == 0)
-    return;
-  endif
-  islist = [el.props.list];
-  ## fast path: every list has the length it has in the first record
-  len = ones (1, np);
-  off = 0;
-  ok = true;
-  for p = 1:np
-    if (islist(p))
-      if (pos + off + 1 > numel (vals))
-        ok = false;
-        break;
-      endif
-      len(p) = 1 + vals(pos + off + 1);
-    endif
-    off += len(p);
-  endfor
-  if (ok && all (len >= 1) && all (len == fix (len)))
-    rec = sum (len);
-    if (pos + rec * n > numel (vals))
-      error ("lafortune:meshReadTruncated",
-             "mesh_read: %s: PLY element '%s' declares %d records, the file ends before",
-             file, el.name, n);
-    endif
-    M = reshape (vals(pos + (1:rec*n)), rec, n);
-    starts = cumsum ([0 len]);
-    same = true;
-    for p = find (islist)
-      same = same && all (M(starts(p)+1,:) == len(p) - 1);
-    endfor
-    if (same)
-      for p = 1:np
-        if (islist(p))
-          cols{p} = M(starts(p)+2:starts(p+1),:).';
-        else
-          cols{p} = M(starts(p)+1,:).';
-        endif
-      endfor
-      pos += rec * n;
-      return;
-    endif
-  endif
-  ## general path: lists of varying length, one record at a time
-  for p = 1:np
-    cols{p} = cell (n, 1);
-  endfor
-  for r = 1:n
-    for p = 1:np
-      if (pos + 1 > numel (vals))
-        error ("lafortune:meshReadTruncated",
-               "mesh_read: %s: PLY element '%s' declares %d records, the file ends in record %d",
-               file, el.name, n, r);
-      endif
-      if (islist(p))
-        m = vals(pos + 1);
-        if (m < 0 || m != fix (m))
-          error ("lafortune:meshReadFormat",
-                 "mesh_read: %s: PLY element '%s' record %d: bad list length %g",
-                 file, el.name, r, m);
-        endif
-        if (pos + 1 + m > numel (vals))
-          error ("lafortune:meshReadTruncated",
-                 "mesh_read: %s: PLY element '%s' declares %d records, the file ends in record %d",
-                 file, el.name, n, r);
-        endif
-        cols{p}{r} = vals(pos + 1 + (1:m));
-        pos += 1 + m;
-      else
-        cols{p}{r} = vals(pos + 1);
-        pos += 1;
-      endif
-    endfor
-  endfor
-  for p = find (! islist)
-    cols{p} = [cols{p}{:}].';
-  endfor
-endfunction
-
-function x = bytes_to (b, t, big)
-  ## b: nbytes x n uint8, one value per column
-  if (big && rows (b) > 1)
-    b = flipud (b);
-  endif
-  x = double (typecast (b(:), t));
-endfunction
-
-function [cols, pos] = ply_binary_elem (body, pos, el, big, file)
-  np = numel (el.props);
-  n = el.count;
-  cols = cell (1, np);
-  if (n == 0)
-    return;
-  endif
-  islist = [el.props.list];
-  sz = zeros (1, np);
-  csz = zeros (1, np);
-  for p = 1:np
-    sz(p) = type_bytes (el.props(p).type);
-    if (islist(p))
-      csz(p) = type_bytes (el.props(p).ctype);
-    endif
-  endfor
-  nb = numel (body);
-  ## fast path: every list has the length it has in the first record
-  len = zeros (1, np);   # bytes per property in a record
-  cnt = zeros (1, np);
-  off = 0;
-  ok = true;
-  for p = 1:np
-    if (islist(p))
-      if (pos + off + csz(p) > nb)
-        ok = false;
-        break;
-      endif
-      cnt(p) = bytes_to (body(pos + off + (1:csz(p))).', el.props(p).ctype, big);
-      len(p) = csz(p) + cnt(p) * sz(p);
-    else
-      len(p) = sz(p);
-    endif
-    off += len(p);
-  endfor
-  if (ok && all (cnt >= 0))
-    rec = sum (len);
-    if (pos + rec * n > nb)
-      error ("lafortune:meshReadTruncated",
-             "mesh_read: %s: PLY element '%s' declares %d records, the file ends before",
-             file, el.name, n);
-    endif
-    M = reshape (body(pos + (1:rec*n)), rec, n);
-    starts = cumsum ([0 len]);
-    same = true;
-    for p = find (islist)
-      c = bytes_to (M(starts(p) + (1:csz(p)),:), el.props(p).ctype, big);
-      same = same && all (c == cnt(p));
-    endfor
-    if (same)
-      for p = 1:np
-        if (islist(p))
-          B = M(starts(p) + csz(p) + (1:cnt(p)*sz(p)),:);
-          cols{p} = reshape (bytes_to (reshape (B, sz(p), []), el.props(p).type, big),
-                             cnt(p), n).';
-        else
-          cols{p} = bytes_to (M(starts(p) + (1:sz(p)),:), el.props(p).type, big);
-        endif
-      endfor
-      pos += rec * n;
-      return;
-    endif
-  endif
-  ## general path: lists of varying length, one record at a time
-  for p = 1:np
-    cols{p} = cell (n, 1);
-  endfor
-  for r = 1:n
-    for p = 1:np
-      if (islist(p))
-        if (pos + csz(p) > nb)
-          error ("lafortune:meshReadTruncated",
-                 "mesh_read: %s: PLY element '%s' declares %d records, the file ends in record %d",
-                 file, el.name, n, r);
-        endif
-        m = bytes_to (body(pos + (1:csz(p))).', el.props(p).ctype, big);
-        pos += csz(p);
-        if (m < 0 || pos + m * sz(p) > nb)
-          error ("lafortune:meshReadTruncated",
-                 "mesh_read: %s: PLY element '%s' declares %d records, the file ends in record %d",
-                 file, el.name, n, r);
-        endif
-        cols{p}{r} = bytes_to (reshape (body(pos + (1:m*sz(p))), sz(p), m),
-                               el.props(p).type, big).';
-        pos += m * sz(p);
-      else
-        if (pos + sz(p) > nb)
-          error ("lafortune:meshReadTruncated",
-                 "mesh_read: %s: PLY element '%s' declares %d records, the file ends in record %d",
-                 file, el.name, n, r);
-        endif
-        cols{p}{r} = bytes_to (body(pos + (1:sz(p))).', el.props(p).type, big);
-        pos += sz(p);
-      endif
-    endfor
-  endfor
-  for p = find (! islist)
-    cols{p} = [cols{p}{:}].';
-  endfor
-endfunction
-
-## Fan-triangulate 0-based PLY polygons (matrix: one polygon per row, or a
-## cell of rows) into 1-based triangles, checking counts and ranges.
-function F = fan (polys, nv, file)
-  if (iscell (polys))
-    lens = cellfun (@numel, polys);
-  else
-    lens = repmat (columns (polys), rows (polys), 1);
-  endif
-  if (isempty (lens))
-    error ("lafortune:meshReadCount", "mesh_read: %s: the mesh has no faces", file);
-  endif
-  if (any (lens < 3))
-    i = find (lens < 3, 1);
-    error ("lafortune:meshReadCount",
-           "mesh_read: %s: face %d has %d vertices, expected at least 3", file, i, lens(i));
-  endif
-  F = zeros (0, 3);
-  key = zeros (0, 1);
-  for m = unique (lens(:)).'
-    if (iscell (polys))
-      P = vertcat (polys{lens == m});
-    else
-      P = polys;
-    endif
-    id = find (lens(:) == m);
-    k = (2:m-1);
-    F = [F; repmat(P(:,1), 1, m-2)(:), P(:,k)(:), P(:,k+1)(:)];
-    key = [key; (id + (k - 1) / m)(:)];    # file order: polygon, then fan
-  endfor
-  [~, o] = sort (key);
-  F = F(o,:);
-  if (any (F(:) != fix (F(:))) || any (F(:) < 0) || any (F(:) >= nv))
-    bad = F(F != fix (F) | F < 0 | F >= nv);
-    error ("lafortune:meshReadIndex",
-           "mesh_read: %s: vertex index %g out of range (expected 0 to %d)",
-           file, bad(1), nv - 1);
-  endif
-  F += 1;
-endfunction
-
-function [V, N] = finish_vertices (V, N, file)
-  if (isempty (V))
-    error ("lafortune:meshReadCount", "mesh_read: %s: the mesh has no vertices", file);
-  endif
-  if (! all (isfinite (V(:))))
-    error ("lafortune:meshReadFormat", "mesh_read: %s: non-finite vertex coordinates", file);
-  endif
-  if (! isempty (N))
-    len = sqrt (sum (N .^ 2, 2));
-    ok = len > 0 & isfinite (len);
-    N(ok,:) ./= len(ok);
-    N(! ok,:) = 0;
-  endif
-endfunction
-
-## ---------------------------------------------------------------- OBJ
-function [V, F, N] = read_obj (txt, file)
-  txt(txt == "\r" | txt == "\t") = " ";
-  if (isempty (txt) || txt(end) != "\n")
-    txt(end+1) = "\n";
-  endif
-  nl = find (txt == "\n");
-  ls = [1, nl(1:end-1) + 1];                 # line starts
-  ## first non-blank character of each line (or its newline)
-  fs = ls;
-  lead = find (txt(ls) == " ");
-  if (! isempty (lead))
-    nb = find (txt != " ");
-    fs(lead) = nb(lookup (nb, ls(lead) - 0.5) + 1);
-  endif
-  c1 = txt(fs);
-  c2 = txt(min (fs + 1, numel (txt)));
-  c3 = txt(min (fs + 2, numel (txt)));
-  isv = c1 == "v" & c2 == " ";
-  isn = c1 == "v" & c2 == "n" & c3 == " ";
-  isf = c1 == "f" & c2 == " ";
-
-  V = obj_numbers (txt, fs(isv) + 1, nl(isv), 3, "v", file);
-  NN = obj_numbers (txt, fs(isn) + 2, nl(isn), 3, "vn", file);
-  if (isempty (V))
-    error ("lafortune:meshReadCount", "mesh_read: %s: the mesh has no vertices", file);
-  endif
-  if (! any (isf))
-    error ("lafortune:meshReadCount", "mesh_read: %s: the mesh has no faces", file);
-  endif
-
-  ## face lines: one string, corners separated by blanks, "v//n" -> "v/0/n"
-  fl = find (isf);
-  s = line_text (txt, fs(fl) + 1, nl(fl));
-  s = strrep (s, "//", "/0/");
-  if (any (! ismember (s, "0123456789-/ \n")))
-    i = find (! ismember (s, "0123456789-/ \n"), 1);
-    error ("lafortune:meshReadFormat",
-           "mesh_read: %s: bad character '%s' in a face line", file, s(i));
-  endif
-  blank = s == " " | s == "\n";
-  tokstart = find (! blank & [true, blank(1:end-1)]);
-  tokend = find (! blank & [blank(2:end), true]);
-  eol = find (s == "\n");
-  line_of_tok = lookup (eol, tokstart) + 1;  # face line of each corner
-  ncorner = accumarray (line_of_tok(:), 1, [numel(fl) 1]);
-  if (any (ncorner < 3))
-    i = find (ncorner < 3, 1);
-    error ("lafortune:meshReadCount",
-           "mesh_read: %s: face on line %d has %d vertices, expected at least 3",
-           file, fl(i), ncorner(i));
-  endif
-  sl = cumsum (s == "/");
-  nslash = sl(tokend) - [0, sl(1:end-1)](tokstart);
-  if (any (nslash > 2) || any (s(tokend) == "/"))
-    error ("lafortune:meshReadFormat", "mesh_read: %s: bad face corner", file);
-  endif
-  s(s == "/") = " ";
-  [num, cnt] = sscanf (s, "%f");
-  if (cnt != numel (tokstart) + sum (nslash))
-    error ("lafortune:meshReadFormat", "mesh_read: %s: bad face corner", file);
-  endif
-  first = cumsum ([1, nslash(1:end-1) + 1]);   # position of each corner's v index
-  vi = num(first).';
-  hasn = nslash == 2;
-  ni = zeros (size (vi));
-  ni(hasn) = num(first(hasn) + 2);
-  if (any (vi != fix (vi)) || any (ni != fix (ni)))
-    error ("lafortune:meshReadFormat", "mesh_read: %s: non-integer face index", file);
-  endif
-  ## negative indices: relative to the vertices / normals read so far
-  nvb = cumsum (isv)(fl(line_of_tok));
-  nnb = cumsum (isn)(fl(line_of_tok));
-  vi(vi < 0) = nvb(vi < 0) + vi(vi < 0) + 1;
-  ni(ni < 0) = nnb(ni < 0) + ni(ni < 0) + 1;
-  nv = rows (V);
-  if (any (vi < 1 | vi > nv))
-    bad = vi(vi < 1 | vi > nv);
-    error ("lafortune:meshReadIndex",
-           "mesh_read: %s: vertex index %d out of range (expected 1 to %d)", file, bad(1), nv);
-  endif
-  if (any (hasn & (ni < 1 | ni > rows (NN))))
-    bad = ni(hasn & (ni < 1 | ni > rows (NN)));
-    error ("lafortune:meshReadIndex",
-           "mesh_read: %s: normal index %d out of range (expected 1 to %d)",
-           file, bad(1), rows (NN));
-  endif
-
-  ## fan triangulation, grouped by corner count
-  cstart = cumsum ([1; ncorner(1:end-1)]);
-  F = zeros (0, 3);
-  key = zeros (0, 1);
-  for m = unique (ncorner).'
-    id = find (ncorner == m);
-    P = reshape (vi(cstart(id) + (0:m-1)), numel (id), m);   # polygons x m
-    k = 2:m-1;
-    F = [F; repmat(P(:,1), 1, m-2)(:), P(:,k)(:), P(:,k+1)(:)];
-    key = [key; (id + (k - 1) / m)(:)];        # file order: polygon, then fan
-  endfor
-  [~, o] = sort (key);
-  F = F(o,:);
-
-  N = [];
-  if (all (hasn) && ! isempty (NN))
-    acc = zeros (nv, 3);
-    for c = 1:3
-      acc(:,c) = accumarray (vi(:), NN(ni, c), [nv 1]);
-    endfor
-    N = acc;
-  endif
-  [V, N] = finish_vertices (V, N, file);
-endfunction
-
-## The text of lines (from character A(k) to the newline E(k)), joined.
-function s = line_text (txt, a, e)
-  if (isempty (a))
-    s = "";
-    return;
-  endif
-  len = e - a + 1;                           # includes the newline
-  idx = ones (1, sum (len));
-  cs = cumsum (len);
-  idx(1) = a(1);
-  idx(cs(1:end-1) + 1) = a(2:end) - e(1:end-1);
-  s = txt(cumsum (idx));
-endfunction
-
-## The first K numbers of each of the lines (text from A(k) to E(k)).
-function X = obj_numbers (txt, a, e, K, what, file)
-  if (isempty (a))
-    X = zeros (0, K);
-    return;
-  endif
-  s = line_text (txt, a, e);
-  blank = s == " " | s == "\n";
-  tokstart = find (! blank & [true, blank(1:end-1)]);
-  eol = find (s == "\n");
-  ntok = accumarray (lookup (eol, tokstart(:)) + 1, 1, [numel(a) 1]);
-  if (any (ntok < K))
-    i = find (ntok < K, 1);
-    error ("lafortune:meshReadFormat",
-           "mesh_read: %s: '%s' line %d has %d numbers, expected %d",
-           file, what, i, ntok(i), K);
-  endif
-  [num, cnt] = sscanf (s, "%f");
-  if (cnt != sum (ntok))
-    error ("lafortune:meshReadFormat", "mesh_read: %s: bad number in a '%s' line", file, what);
-  endif
-  first = cumsum ([1; ntok(1:end-1)]);
-  X = reshape (num(first + (0:K-1)), numel (first), K);
+  [V, F, N, info] = mesh_finish (V, F, N, info, file);
+  info.file = file;
+  info = orderfields (info, {"file", "format", "vertices", "faces", "polygons", ...
+                             "triangles", "degenerate", "normals", "split", "filled"});
 endfunction
 
 %!function write_text (f, s)
@@ -711,7 +189,7 @@ endfunction
 %! assert (V, Vq);
 %! assert (F, [1 2 3; 1 3 4; 1 2 5]);
 %! assert (N, [0 0 1; 0 0 1; 0 0 1; 0 0 1; 0 0.6 0.8], 1e-12);
-%! write_text (f, "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1/1 2/2 3/3\nf 1 3 4\n");
+%! write_text (f, "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nf 1/1 2/2 3/3\nf 1 3 4\n");
 %! [V, F, N] = mesh_read (f);
 %! assert (F, [1 2 3; 1 3 4]);
 %! assert (isempty (N));
@@ -772,3 +250,35 @@ endfunction
 %! try, mesh_read (g); error ("no error"); catch e, assert (e.identifier, "lafortune:meshReadIndex"); end
 %! confirm_recursive_rmdir (false, "local");
 %! rmdir (d, "s");
+
+%!test
+%! ## info: counts, a degenerate triangle dropped, split normals
+%! d = tempname (); mkdir (d);
+%! f = fullfile (d, "k.obj");
+%! fid = fopen (f, "w");
+%! fputs (fid, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvn 0 0 -1\nvn 0 -1 0\n");
+%! fputs (fid, "f 1//1 3//1 2//1\nf 1//2 2//2 4//2\nf 1//2 1//2 2//2\n");
+%! fclose (fid);
+%! [V, F, N, info] = mesh_read (f);
+%! assert ([info.polygons info.triangles info.degenerate info.faces], [3 3 1 2]);
+%! assert ([info.vertices info.split], [6 2]);
+%! assert (info.normals, "corner");
+%! assert (F, [1 3 2; 5 6 4]);
+%! assert (V(5:6,:), V(1:2,:));
+%! assert (N([1 2 3 4 5 6],:), [0 0 -1; 0 0 -1; 0 0 -1; 0 -1 0; 0 -1 0; 0 -1 0]);
+%! delete (f); rmdir (d);
+
+%!demo
+%! ## a flat-shaded OBJ cube: each corner of the cube gets three normals,
+%! ## so its 8 vertices become 24; the file's degenerate face is dropped
+%! f = [tempname() ".obj"];
+%! fid = fopen (f, "w");
+%! fprintf (fid, "v %d %d %d\n", [0 0 0; 1 0 0; 0 1 0; 1 1 0; 0 0 1; 1 0 1; 0 1 1; 1 1 1].');
+%! fprintf (fid, "vn %d %d %d\n", [0 0 -1; 0 0 1; 0 -1 0; 0 1 0; -1 0 0; 1 0 0].');
+%! Q = [1 3 4 2; 5 6 8 7; 1 2 6 5; 3 7 8 4; 1 5 7 3; 2 4 8 6];
+%! fprintf (fid, "f %d//%d %d//%d %d//%d %d//%d\n", [Q(:,1) (1:6)' Q(:,2) (1:6)' Q(:,3) (1:6)' Q(:,4) (1:6)'].');
+%! fprintf (fid, "f 1//1 1//1 2//1\n");
+%! fclose (fid);
+%! [V, F, N, info] = mesh_read (f)
+%! delete (f);
+%! trisurf (F, V(:,1), V(:,2), V(:,3)); axis equal;

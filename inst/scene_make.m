@@ -22,9 +22,17 @@
 ## [96 48], i.e. 9216 triangles; [224 224] gives 100352).
 ## @item "mesh"
 ## a triangle mesh read with @code{mesh_read} from option @code{"file"} (PLY or
-## OBJ, e.g. the Stanford Happy Buddha @file{happy_vrip.ply} you download),
-## centred at the origin and scaled to a largest extent of 2; without a file,
-## the built-in torus.
+## OBJ, e.g. the Stanford Happy Buddha @file{happy_vrip.ply} you download);
+## without a file, the built-in torus.  The mesh is framed automatically,
+## wherever it lies and whatever its size: turned y up (option
+## @code{"up"}), centred at the origin and scaled to a largest side of 2
+## (option @code{"normalize"}), and seen by a camera fitted to its bounding
+## box: on the +z side of the box centre, looking at it, 5 half-sides (the
+## box's largest) away; the orthographic @code{extent}, and for
+## @code{"camera", "perspective"} the field of view, show the box's front
+## with a 10% margin for the image's shape.  The point light is 10
+## half-sides from the box centre.  The Happy Buddha thus fills 9/10 of the
+## paper's 256 x 512 view.
 ## @end table
 ##
 ## Options (name/value pairs):
@@ -65,12 +73,29 @@
 ## mesh file for the scene @code{"mesh"}.
 ## @item "resolution"
 ## [nu nv] of the built-in torus, default [96 48].
+## @item "up"
+## the mesh file's up axis: @code{"y"} (default) or @code{"z"}.  A z-up mesh
+## is rotated by -90 degrees about x, (x, y, z) -> (x, z, -y), so that its
+## z becomes the world's y and its -y side (the front in z-up tools such as
+## Blender) faces the camera; the camera keeps y as its up vector, so the
+## light directions mean the same for every mesh.
+## @item "normalize"
+## true (default): centre and scale the mesh as above; false: keep the
+## file's coordinates (the camera and the point light are fitted to them
+## all the same).
 ## @end table
 ##
 ## The struct (fields @code{name}, @code{width}, @code{height}, @code{spp},
 ## @code{seed}, @code{background}, @code{camera}, @code{light},
-## @code{objects}) is the one documented in HACKING.md; the orthographic
-## @code{extent} frames the objects with a margin for any aspect ratio.
+## @code{objects}, @code{mesh_info}) is the one documented in HACKING.md; the
+## orthographic @code{extent} frames the objects with a margin for any
+## aspect ratio.  For the scenes "mesh" and "torus", @code{mesh_info} is
+## the @var{info} of @code{mesh_read} (counts: @code{polygons},
+## @code{triangles}, @code{degenerate} triangles dropped, @code{faces},
+## @code{vertices}, vertex @code{normals} and @code{split}) with the fields
+## @code{up}, @code{rotation}, @code{center} and @code{scale}: the scene's
+## vertices are (V * rotation.' - center) * scale for the file's V; for the
+## other scenes it is empty.
 ## With no argument, the names of the scenes are returned.  An unknown scene
 ## gives the error @code{lafortune:unknownScene}, a bad option
 ## @code{lafortune:badOption}.
@@ -83,6 +108,8 @@
 ## img = rt_render (scene, model);
 ## imshow (img / max (img(:)));
 ## scene = scene_make ("mesh", "file", "happy_vrip.ply", "size", "paper", "spp", 128);
+## scene.mesh_info.degenerate               # triangles dropped
+## scene = scene_make ("mesh", "file", "part.obj", "up", "z", "camera", "perspective");
 ## @end group
 ## @end example
 ## @seealso{rt_render, mesh_read, mesh_torus, scene_slice}
@@ -108,7 +135,7 @@ function scene = scene_make (name, varargin)
                             "camera", "orthographic", "light", "directional",
                             "light_direction", [], "irradiance", 1,
                             "background", [0 0 0], "file", "", "resolution", [96 48],
-                            "jitter", true));
+                            "jitter", true, "up", "y", "normalize", true));
   [H, W] = check_size (opt.size);
   spp = opt.spp;
   if (! (isnumeric (spp) && isscalar (spp) && isreal (spp) && spp >= 1 && spp == fix (spp)))
@@ -143,8 +170,22 @@ function scene = scene_make (name, varargin)
   if (! isempty (opt.file) && ! strcmp (name, "mesh"))
     error ("lafortune:badOption", "scene_make: option FILE is for the scene \"mesh\" only");
   endif
+  if (! ischar (opt.up) || ! any (strcmpi (opt.up, {"y", "z"})))
+    error ("lafortune:badOption", "scene_make: UP must be \"y\" or \"z\"");
+  endif
+  if (! ((islogical (opt.normalize) || isnumeric (opt.normalize)) && isscalar (opt.normalize)
+         && any (opt.normalize == [0 1])))
+    error ("lafortune:badOption", "scene_make: NORMALIZE must be true or false");
+  endif
+  if ((strcmpi (opt.up, "z") || ! opt.normalize) && isempty (opt.file))
+    error ("lafortune:badOption",
+           "scene_make: options UP and NORMALIZE are for a mesh read from a FILE");
+  endif
 
   aspect = H / W;
+  fov = [];                                  # [] for 2 * atand (extent / 2 / dist)
+  ldist = 10;                                # point light: distance from the target
+  mesh_info = [];
   switch (name)
     case "sphere"
       objects = make_obj ("sphere", "center", [0 0 0], "radius", 1);
@@ -171,23 +212,30 @@ function scene = scene_make (name, varargin)
         if (! ischar (opt.file))
           error ("lafortune:badOption", "scene_make: FILE must be a file name");
         endif
-        [V, F, N] = mesh_read (opt.file);
+        [V, F, N, mesh_info] = mesh_read (opt.file);
+        [V, N, mesh_info] = mesh_place (V, N, mesh_info, opt.up, opt.normalize);
         lo = min (V, [], 1);
         hi = max (V, [], 1);
-        V = (V - (lo + hi) / 2) * (2 / max (hi - lo));
+        [eye, target, extent, fov] = mesh_frame (lo, hi, aspect);
+        ldist = 5 * max (hi - lo);           # 10 with "normalize"
       else
         [V, F, N] = mesh_torus (opt.resolution);
         a = 60 * pi / 180;                   # tilt the axis toward the camera
         Rx = [1 0 0; 0 cos(a) -sin(a); 0 sin(a) cos(a)];
         V = V * Rx.';
         N = N * Rx.';
+        lo = min (V, [], 1);
+        hi = max (V, [], 1);
+        eye = [0 0 5];
+        target = [0 0 0];
+        extent = 1.1 * max (2 * max (abs ([lo(2) hi(2)])), 2 * max (abs ([lo(1) hi(1)])) * aspect);
+        mesh_info = struct ("file", "", "format", "mesh_torus", "vertices", rows (V),
+                            "faces", rows (F), "polygons", rows (F), "triangles", rows (F),
+                            "degenerate", 0, "normals", "vertex", "split", 0, "filled", 0,
+                            "up", "y", "rotation", [1 0 0; 0 1 0; 0 0 1],
+                            "center", [0 0 0], "scale", 1);
       endif
       objects = make_obj ("mesh", "vertices", V, "faces", F, "normals", N);
-      lo = min (V, [], 1);
-      hi = max (V, [], 1);
-      eye = [0 0 5];
-      target = [0 0 0];
-      extent = 1.1 * max (2 * max (abs ([lo(2) hi(2)])), 2 * max (abs ([lo(1) hi(1)])) * aspect);
       ldir = [-1 1 1];
   endswitch
 
@@ -202,13 +250,16 @@ function scene = scene_make (name, varargin)
   ldir = double (ldir(:).') / norm (ldir);
   dist = norm (eye - target);
   camera = struct ("type", opt.camera, "eye", eye, "target", target, "up", [0 1 0],
-                   "extent", extent, "fov", 2 * atand (extent / 2 / dist));
+                   "extent", extent, "fov", fov);
+  if (isempty (fov))
+    camera.fov = 2 * atand (extent / 2 / dist);
+  endif
   E = double (E(:).');
   if (strcmp (opt.light, "directional"))
     light = struct ("type", "directional", "direction", ldir, "position", [],
                     "irradiance", E);
   else
-    d = 10;
+    d = ldist;
     light = struct ("type", "point", "direction", [], "position", target + d * ldir,
                     "irradiance", E * d ^ 2);
   endif
@@ -217,6 +268,7 @@ function scene = scene_make (name, varargin)
                   "background", double (bg(:).'),
                   "camera", camera, "light", light);
   scene.objects = objects;
+  scene.mesh_info = mesh_info;
 endfunction
 
 function [H, W] = check_size (sz)
@@ -297,11 +349,22 @@ endfunction
 %! fprintf (fid, "v 10 10 10\nv 14 10 10\nv 10 11 10\nv 10 10 12\nf 1 2 3\nf 1 2 4\n");
 %! fclose (fid);
 %! s = scene_make ("mesh", "file", f);
-%! delete (f);
 %! V = s.objects.vertices;
 %! assert (max (V) - min (V), [2 0.5 1], 1e-12);
 %! assert ((max (V) + min (V)) / 2, [0 0 0], 1e-12);
 %! assert (isempty (s.objects.normals));
+%! assert ([s.mesh_info.polygons s.mesh_info.degenerate s.mesh_info.scale], [2 0 0.5]);
+%! assert (s.mesh_info.center, [12 10.5 11]);
+%! ## the camera is fitted to the box: the same frame with "normalize", false
+%! t = scene_make ("mesh", "file", f, "normalize", false, "camera", "perspective");
+%! assert (t.objects.vertices(1,:), [10 10 10]);
+%! assert (t.camera.target, [12 10.5 11]);
+%! assert (t.camera.eye, [12 10.5 21]);
+%! assert (t.camera.extent, 2 * s.camera.extent);
+%! assert (t.camera.fov, s.camera.fov, 1e-12);
+%! delete (f);
+%! assert (isempty (scene_make ("sphere").mesh_info));
+%! assert (scene_make ("torus", "resolution", [8 4]).mesh_info.faces, 64);
 
 %!test
 %! s = scene_make ("sphere", "camera", "perspective", "light", "point", ...
@@ -332,6 +395,8 @@ endfunction
 %! assert (scene_make ("sphere").jitter, true);
 %! assert (scene_make ("sphere", "jitter", false).jitter, false);
 %!error id=lafortune:meshReadNotFound scene_make ("mesh", "file", "/nonexistent/x.ply")
+%!error id=lafortune:badOption scene_make ("mesh", "file", "x.ply", "up", "-z")
+%!error id=lafortune:badOption scene_make ("torus", "normalize", false)
 
 %!demo
 %! ## the four built-in scenes, small and quick
