@@ -110,6 +110,11 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
   opt = check_opts (opt, nlobes);
   pkg_load_optim ();
 
+  ## a sample of weight 0 is left out
+  keep = S.weight > 0;
+  if (! all (keep))
+    S.wi = S.wi(keep,:); S.wo = S.wo(keep,:); S.rgb = S.rgb(keep,:); S.weight = S.weight(keep);
+  endif
   x = [S.wi(:,1) .* S.wo(:,1) + S.wi(:,2) .* S.wo(:,2), S.wi(:,3) .* S.wo(:,3)];
   cosi = S.wi(:,3);
   wt = S.weight;
@@ -157,11 +162,15 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
     p = fit_unscale (ch.p, D.s);
     model = set_params (model, c, p);
     for k = 1:numel (ch.ps)
-      if (! isempty (ch.ps{k}))
-        models{k} = set_params (models{k}, c, fit_unscale (ch.ps{k}, D.s));
+      if (! isempty (ch.ps{k}) && k < nlobes)
+        pk = fit_unscale (ch.ps{k}, D.s);
+        models{k} = set_params (models{k}, c, pk);
+        info.history(k,c) = fit_metrics (lafortune_core (pk, x(:,1), x(:,2)), y, cosi, wt).rmse;
       endif
     endfor
     e = fit_metrics (lafortune_core (p, x(:,1), x(:,2)), y, cosi, wt);
+    info.history(nlobes,c) = e.rmse;
+    models{nlobes} = set_params (models{nlobes}, c, p);
     info.time(c) = toc (t0);
     info.rmse(c) = e.rmse; info.rel_rmse(c) = e.rel_rmse;
     info.log_rmse(c) = e.log_rmse; info.cos_rmse(c) = e.cos_rmse;
@@ -169,7 +178,6 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
     info.full_iterations(c) = ch.full_iter;
     info.rejected(c) = ch.rejected;
     info.converged(c) = ch.cvg;
-    info.history(:,c) = ch.hist(:);
     info.lobe_time(:,c) = ch.ktime(:);
     info.trace{c} = best_trace (ch.trace, info.time(c), e.rmse);
     if (! ch.cvg)
@@ -257,22 +265,24 @@ function opt = check_opts (opt, nlobes)
 endfunction
 
 ## The groups the fit runs on (J, XC: exact equal (a, c) pairs, or grid
-## cells when there are more than AUTO_GROUPS of them, or as "reduce" says)
+## cells when there are more than AUTO_GROUPS samples, or as "reduce" says)
 ## and the coarser groups that screen starts (JR, XR: about "screen_samples"
 ## cells, or the groups themselves when there are no more than that).
 function [j, xc, jr, xr, how] = groups (x, wt, opt)
   AUTO_GROUPS = 20000;
   AUTO_GRID = 512;
   if (isnumeric (opt.reduce))
-    [j, xc] = fit_reduce (x, wt, opt.reduce);
-    how = sprintf ("grid %d", opt.reduce);
+    n = opt.reduce;
+  elseif (strcmp (opt.reduce, "auto") && rows (x) > AUTO_GROUPS)
+    n = AUTO_GRID;
   else
-    [j, xc] = fit_reduce (x, wt, Inf);
+    n = Inf;
+  endif
+  [j, xc] = fit_reduce (x, wt, n);
+  if (isinf (n))
     how = "exact";
-    if (strcmp (opt.reduce, "auto") && rows (xc) > AUTO_GROUPS)
-      [j, xc] = fit_reduce (x, wt, AUTO_GRID);
-      how = sprintf ("grid %d", AUTO_GRID);
-    endif
+  else
+    how = sprintf ("grid %d", n);
   endif
   jr = j; xr = xc;
   if (rows (xc) > opt.screen_samples)
@@ -496,6 +506,95 @@ endfunction
 %! [m, info] = lafortune_fit (S, 1, "init", "plain", "jacobian", "numeric", "bounds", false, "channels", 2);
 %! assert (all (isfinite ([m.rho_d m.Cxy(:)' m.Cz(:)' m.e(:)'])));
 
+%!test
+%! ## scale invariance: fit (c*y) = c*fit (y) in every weighting, c = 1e-12 .. 1e12
+%! truth = struct ("rho_d", [0.2 0.1 0.05], "Cxy", [-0.9 -1 -1.1], "Cz", [0.8 1 0.9], "e", [5 30 80]);
+%! S = __plane (truth, 0:4:80, -80:4:80);
+%! for w = {"plain", "cosine", "relative", "log"}
+%!   [m1, i1] = lafortune_fit (S, 1, "weight", w{1});
+%!   f1 = lafortune_eval (m1, S.wi, S.wo);
+%!   for c = 10 .^ (-12:4:12)
+%!     Sc = S; Sc.rgb = c * S.rgb;
+%!     [mc, ic] = lafortune_fit (Sc, 1, "weight", w{1});
+%!     fc = lafortune_eval (mc, S.wi, S.wo) / c;
+%!     assert (max (abs (fc(:) - f1(:))) <= 1e-9 * max (abs (f1(:))), sprintf ("%s, c = %g", w{1}, c));
+%!     assert (ic.rmse, c * i1.rmse, 1e-9 * c * max (S.rgb(:)));
+%!     assert (ic.rel_rmse < 1e-3);
+%!   endfor
+%! endfor
+
+%!test
+%! ## scale invariance of the grown 3-lobe fit on noisy data
+%! truth = struct ("rho_d", [0.05 0.1 0.02], "Cxy", [-1 -1 -1; -0.7 -0.6 -0.8; 0.5 0.5 0.5], ...
+%!                 "Cz", [1 1 1; 0.72 0.65 0.8; 0.5 0.5 0.5], "e", [200 150 300; 8 6 10; 3 3 3]);
+%! S = __plane (truth, 0:2:80, -80:2:80);
+%! randn ("state", 3);
+%! S.rgb .*= 1 + 0.05 * randn (size (S.rgb));
+%! [m1, i1] = lafortune_fit (S, 3, "channels", 2);
+%! f1 = lafortune_eval (m1, S.wi, S.wo)(:,2);
+%! for c = [1e-12 1e12]
+%!   Sc = S; Sc.rgb = c * S.rgb;
+%!   mc = lafortune_fit (Sc, 3, "channels", 2);
+%!   fc = lafortune_eval (mc, S.wi, S.wo)(:,2) / c;
+%!   assert (max (abs (fc - f1)) <= 1e-9 * max (f1));
+%! endfor
+
+%!test
+%! ## sample weights: an integer weight is the sample repeated; a zero weight
+%! ## leaves the sample out
+%! truth = struct ("rho_d", [0.2 0.2 0.2], "Cxy", -[1 1 1], "Cz", [1 1 1], "e", [50 50 50]);
+%! S = __plane (truth, 0:2:80, -80:2:80);
+%! randn ("state", 5);
+%! S.rgb .*= 1 + 0.2 * randn (size (S.rgb));
+%! n = rows (S.wi);
+%! k = 1 + mod ((1:n)', 3);                 # weights 1, 2, 3
+%! Sw = S; Sw.weight = k;
+%! r = repelem ((1:n)', k);
+%! Sr = struct ("wi", S.wi(r,:), "wo", S.wo(r,:), "rgb", S.rgb(r,:));
+%! [mw, iw] = lafortune_fit (Sw, 1, "channels", 1);
+%! [mr, ir] = lafortune_fit (Sr, 1, "channels", 1);
+%! fw = lafortune_eval (mw, S.wi, S.wo)(:,1); fr = lafortune_eval (mr, S.wi, S.wo)(:,1);
+%! assert (max (abs (fw - fr)) <= 1e-9 * max (fr));
+%! assert (iw.rmse(1), ir.rmse(1), 1e-9 * ir.rmse(1));
+%! z = mod ((1:n)', 4) == 0;
+%! Sz = S; Sz.weight = double (! z); Sz.rgb(z,:) = 1e3;   # garbage where the weight is 0
+%! So = struct ("wi", S.wi(! z,:), "wo", S.wo(! z,:), "rgb", S.rgb(! z,:));
+%! [mz, iz] = lafortune_fit (Sz, 1, "channels", 1);
+%! [mo, io] = lafortune_fit (So, 1, "channels", 1);
+%! fz = lafortune_eval (mz, S.wi, S.wo)(:,1); fo = lafortune_eval (mo, S.wi, S.wo)(:,1);
+%! assert (max (abs (fz - fo)) <= 1e-9 * max (fo));
+%! assert (iz.rmse(1), io.rmse(1), 1e-9 * io.rmse(1));
+
+%!test
+%! ## grid cells in (a, c) against the exact groups: the same fit to a small,
+%! ## bounded difference; noise-free data are recovered either way
+%! truth = struct ("rho_d", [0.1 0.05 0.02], "Cxy", [-1 -1 -1; -0.6 -0.6 -0.6], ...
+%!                 "Cz", [0.9 0.9 0.9; 0.7 0.7 0.7], "e", [60 60 60; 5 5 5]);
+%! S = merl_samples (merl_synth (truth), "max_samples", 30000);
+%! [me, ie] = lafortune_fit (S, 2, "reduce", "exact", "channels", 2);
+%! [mg, ig] = lafortune_fit (S, 2, "reduce", 128, "channels", 2);
+%! assert (ie.reduce, "exact");
+%! assert (ig.reduce, "grid 128");
+%! assert (ig.groups < ie.groups / 2);
+%! assert (ie.rel_rmse(2) < 1e-3);
+%! assert (ig.rel_rmse(2) < 1e-3);
+%! fe = lafortune_eval (me, S.wi, S.wo)(:,2); fg = lafortune_eval (mg, S.wi, S.wo)(:,2);
+%! assert (max (abs (fg - fe)) <= 1e-2 * max (fe));
+%! ## more than 20000 samples: cells by default
+%! [~, ia] = lafortune_fit (S, 1, "channels", 2);
+%! assert (ia.reduce, "grid 512");
+
+%!warning id=lafortune:negativeData lafortune_fit (struct ("wi", repmat ([0 0 1], 5, 1), "wo", repmat ([0 0 1], 5, 1), "rgb", -ones (5, 3)), 1, "channels", 1);
+%!test
+%! ## all-negative data: a warning with an id, and the zero model
+%! S = struct ("wi", [sind(0:10:80)' zeros(9,1) cosd(0:10:80)'], "wo", [-sind(0:10:80)' zeros(9,1) cosd(0:10:80)']);
+%! S.rgb = -repmat ((1:9)', 1, 3);
+%! warning ("off", "lafortune:notConverged", "local");
+%! warning ("off", "lafortune:negativeData", "local");
+%! [m, info] = lafortune_fit (S, 1, "channels", 2);
+%! assert (info.rel_rmse(2), 1, 1e-12);
+%! assert (lafortune_eval (m, S.wi, S.wo)(:,2), zeros (9, 1));
+
 %!warning <did not converge> lafortune_fit (__plane (struct ("rho_d", [0.2 0.1 0.05], "Cxy", [-0.9 -1 -1.1], "Cz", [0.8 1 0.9], "e", [5 30 80])), 1, "max_iter", 1, "channels", 1);
 
 %!shared S0
@@ -512,3 +611,9 @@ endfunction
 %!error id=lafortune:badOption lafortune_fit (S0, 1, "init", "random")
 %!error id=lafortune:badOption lafortune_fit (S0, 2, "start", struct ("rho_d", [0 0 0], "Cxy", [1 1 1], "Cz", [1 1 1], "e", [1 1 1]))
 %!error id=lafortune:badModel lafortune_fit (S0, 1, "start", struct ("rho_d", [0 0 0]))
+%!error <S.weight must be N x 1> lafortune_fit (setfield (S0, "weight", ones (4, 1)), 1)
+%!error <S.weight must be N x 1> lafortune_fit (setfield (S0, "weight", [1 1 -1 1 1]'), 1)
+%!error <S.weight must be N x 1> lafortune_fit (setfield (S0, "weight", zeros (5, 1)), 1)
+%!error <S.weight must be N x 1> lafortune_fit (setfield (S0, "weight", [1 1 NaN 1 1]'), 1)
+%!error <REDUCE must be> lafortune_fit (S0, 1, "reduce", "coarse")
+%!error <REDUCE must be> lafortune_fit (S0, 1, "reduce", 0)

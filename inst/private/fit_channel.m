@@ -12,20 +12,18 @@
 ## never fit worse).
 ##
 ## @var{ch}: @code{p} (scaled units), @code{ps} (cell, per lobe count),
-## @code{hist} (rmse per lobe count), @code{ktime}, @code{iter},
+## @code{ktime} (seconds until each lobe count was done), @code{iter},
 ## @code{full_iter}, @code{cvg}, @code{rejected}, and @code{trace}: rows
 ## [seconds, objective, rmse] of the evaluations on @var{D} of accepted runs.
 ## @end deftypefn
 function ch = fit_channel (D, R, nlobes, opt, G, p0)
   t0 = tic ();
-  ch = struct ("p", [], "ps", {cell(1, nlobes)}, "hist", nan (1, nlobes),
-               "ktime", nan (1, nlobes), "iter", 0, "full_iter", 0, "cvg", true,
+  ch = struct ("p", [], "ps", {cell(1, nlobes)}, "ktime", nan (1, nlobes), "iter", 0, "full_iter", 0, "cvg", true,
                "rejected", 0, "trace", zeros (0, 3));
   if (nargin > 5)
     [ch.p, ch.iter, ch.cvg, ch.trace] = fit_lm (D, p0, opt, t0);
     ch.full_iter = ch.iter;
     ch.ps{nlobes} = ch.p;
-    [~, ch.hist(nlobes)] = fit_objective (D, lafortune_core (ch.p, D.x(:,1), D.x(:,2)));
     return;
   endif
   ## 0 lobes: rho_d by weighted least squares
@@ -42,7 +40,6 @@ function ch = fit_channel (D, R, nlobes, opt, G, p0)
     ch.rejected += run.rejected;
     ch.cvg = run.cvg;
     ch.ps{k} = p;
-    [~, ch.hist(k)] = fit_objective (D, lafortune_core (p, D.x(:,1), D.x(:,2)));
     ch.ktime(k) = toc (t0);
   endfor
   ch.p = p;
@@ -50,8 +47,8 @@ endfunction
 
 ## One more lobe on top of P (objective OBJ).  The best start of each of the
 ## first TRIES direction families gets up to SCREEN_ITER iterations on R;
-## from the best of those, a run to convergence on R (when R is coarser than
-## D) and last on D.  A result that fails the guard is rejected and the next
+## from the best of those, a run to convergence on R (when R is much smaller
+## than D) and last on D.  A result that fails the guard is rejected and the next
 ## start tried; a result that is not better keeps a zero lobe.
 function run = add_lobe (D, R, p, obj, opt, G, t0)
   run = struct ("p", [p; 0; 0; 1], "obj", obj, "trace", zeros (0, 3), "iter", 0,
@@ -60,7 +57,8 @@ function run = add_lobe (D, R, p, obj, opt, G, t0)
   if (isempty (starts) || ! (obj > 0))
     return;
   endif
-  coarse = rows (R.x) < rows (D.x);
+  ## a run on R first pays only when R is much smaller than D
+  coarse = 4 * rows (R.x) < rows (D.x);
   ntry = min (opt.tries, columns (starts));
   starts = starts(:,1:ntry);
   done = false (1, ntry);

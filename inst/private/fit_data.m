@@ -20,12 +20,12 @@
 ## candidate starts.
 ## @end deftypefn
 function D = fit_data (x, y, wt, cosi, weight, j, xc)
-  s = max (abs (y));
+  s = max (abs (y(wt > 0)));
   if (! (s > 0))
     s = 1;
   endif
   y = y / s;
-  dl = fit_log_delta (y);
+  dl = fit_log_delta (y, wt);
   switch (weight)
     case {"plain", "log"}
       w2 = ones (size (y));
@@ -57,5 +57,5 @@ function D = fit_data (x, y, wt, cosi, weight, j, xc)
   D.s = s;
   D.dl = dl;
   D.islog = islog;
-  D.ymax = max (abs (y));
+  D.ymax = max (abs (y(wt > 0)));
 endfunction

@@ -19,35 +19,32 @@ function P = fit_starts (D, p)
   fcur = lafortune_core (p, D.x(:,1), D.x(:,2));
   r = D.yl - fcur;
   wl2 = D.wl .^ 2;
+  w2 = D.w .^ 2;
+  res0 = w2 .* (D.ty - fit_tf (D, fcur)) .^ 2;
+  res_all = sum (res0);
   cand = zeros (0, 5);     # [objective, cxy, cz, e, family]
   for i = 1:rows (dirs)
     b = dirs(i,1) * D.x(:,1) + dirs(i,2) * D.x(:,2);
-    on = b > 0;
-    if (! any (on))
+    on = find (b > 0);
+    if (isempty (on))
       continue;
     endif
-    lb = log (b(on));
-    for e = expo
-      g = zeros (m, 1);
-      g(on) = exp (max (e * lb, -700));
-      gg = sum (wl2 .* g .^ 2);
-      if (! (gg > 0))
-        continue;
-      endif
-      s = sum (wl2 .* g .* r) / gg;
-      if (! (s > 0))
-        continue;
-      endif
-      a = s ^ (1 / e);
-      if (! isfinite (a) || a <= 0)
-        continue;
-      endif
-      ## a lobe that lives on a handful of samples is no start
-      if (nnz (g > 1e-3 * max (g)) < min_support)
-        continue;
-      endif
-      cand(end+1,:) = [fit_objective(D, fcur + s * g), a * dirs(i,:), e, i];
-    endfor
+    ## every exponent at once: g(:,k) = b^expo(k) where b > 0
+    g = exp (max (log (b(on)) * expo, -700));
+    gg = wl2(on).' * g .^ 2;
+    s = (wl2(on) .* r(on)).' * g ./ gg;
+    a = s .^ (1 ./ expo);
+    ## a lobe that lives on a handful of samples is no start
+    support = sum (g > 1e-3 * max (g, [], 1), 1);
+    ok = gg > 0 & s > 0 & isfinite (a) & a > 0 & support >= min_support;
+    if (! any (ok))
+      continue;
+    endif
+    ## the objective of every candidate at once (fit_objective, by columns)
+    s = s(ok); g = g(:,ok);
+    res_on = sum (w2(on) .* (D.ty(on) - fit_tf (D, fcur(on) + g .* s)) .^ 2, 1);
+    obj = sqrt ((res_all - sum (res0(on)) + res_on + D.wsw) / D.n);
+    cand = [cand; obj(:), a(ok)(:) * dirs(i,:), expo(ok)(:), repmat(i, numel (s), 1)];
   endfor
   if (isempty (cand))
     P = zeros (numel (p) + 3, 0);
