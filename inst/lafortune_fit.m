@@ -103,7 +103,7 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
            num2str (nlobes));
   endif
   opt = parse_opts (varargin, "lafortune_fit",
-                    struct ("weight", "plain", "max_iter", 100, "tol", 1e-7, "tries", 2,
+                    struct ("weight", "plain", "max_iter", 100, "tol", 1e-7, "tries", 1,
                             "screen_iter", 8, "screen_samples", 2000, "reduce", "auto",
                             "start", [], "init", "grow", "jacobian", "analytic",
                             "bounds", true, "channels", 1:3));
@@ -179,7 +179,7 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
     info.rejected(c) = ch.rejected;
     info.converged(c) = ch.cvg;
     info.lobe_time(:,c) = ch.ktime(:);
-    info.trace{c} = best_trace (ch.trace, info.time(c), e.rmse);
+    info.trace{c} = best_trace (ch.trace, info.time(c), e.rmse, strcmp (info_reduce, "exact"));
     if (! ch.cvg)
       warning ("lafortune:notConverged",
                "lafortune_fit: channel %d (%d lobes) did not converge in %d iterations; the parameters are finite but may not be optimal",
@@ -301,17 +301,16 @@ function [j, xc, jr, xr, how] = groups (x, wt, opt)
 endfunction
 
 ## [seconds, rmse of the best parameters so far (best in the fit's own
-## objective)] from rows [seconds, objective, rmse]; the last row is the
-## fit's rmse on all samples (which differs from the grouped one when the
-## groups are grid cells)
-function T = best_trace (R, t, err)
+## objective)] from rows [seconds, objective, rmse]; when the groups are grid
+## cells (EXACT false), a last row holds the fit's rmse on all samples
+function T = best_trace (R, t, err, exact)
   if (isempty (R))
     T = [t, err];
     return;
   endif
   [~, best] = cummin (R(:,2));
   T = [R(:,1), R(best,3)];
-  if (abs (T(end,2) - err) > 1e-12 * max (err, realmin))
+  if (! exact)
     T(end+1,:) = [max(t, T(end,1)), err];
   endif
 endfunction

@@ -45,11 +45,13 @@ function ch = fit_channel (D, R, nlobes, opt, G, p0)
   ch.p = p;
 endfunction
 
-## One more lobe on top of P (objective OBJ).  The best start of each of the
-## first TRIES direction families gets up to SCREEN_ITER iterations on R;
-## from the best of those, a run to convergence on R (when R is much smaller
-## than D) and last on D.  A result that fails the guard is rejected and the next
-## start tried; a result that is not better keeps a zero lobe.
+## One more lobe on top of P (objective OBJ).  When TRIES > 1, the best
+## start of each of the first TRIES direction families gets up to SCREEN_ITER
+## iterations on R and they are ranked by the result; the others follow in
+## the order of fit_starts.  From the first start, a run to convergence on R
+## (when R is much smaller than D) and last on D.  A result that fails the
+## guard is rejected and the next start tried; a result that is not better
+## keeps a zero lobe.
 function run = add_lobe (D, R, p, obj, opt, G, t0)
   run = struct ("p", [p; 0; 0; 1], "obj", obj, "trace", zeros (0, 3), "iter", 0,
                 "full_iter", 0, "rejected", 0, "cvg", true);
@@ -60,8 +62,7 @@ function run = add_lobe (D, R, p, obj, opt, G, t0)
   ## a run on R first pays only when R is much smaller than D
   coarse = 4 * rows (R.x) < rows (D.x);
   ntry = min (opt.tries, columns (starts));
-  starts = starts(:,1:ntry);
-  done = false (1, ntry);
+  done = false (1, columns (starts));
   if (ntry > 1)
     screen = opt;
     screen.max_iter = min (opt.screen_iter, opt.max_iter);
@@ -72,10 +73,10 @@ function run = add_lobe (D, R, p, obj, opt, G, t0)
       sobj(i) = fit_objective (R, lafortune_core (starts(:,i), R.x(:,1), R.x(:,2)));
     endfor
     [~, so] = sort (sobj);
-    starts = starts(:,so);
-    done = done(so);
+    starts(:,1:ntry) = starts(:,so);
+    done(1:ntry) = done(so);
   endif
-  for i = 1:ntry
+  for i = 1:columns (starts)
     ps = starts(:,i);
     if (coarse && ! done(i))
       [ps, it] = fit_lm (R, ps, opt);

@@ -25,7 +25,10 @@ function D = fit_data (x, y, wt, cosi, weight, j, xc)
     s = 1;
   endif
   y = y / s;
-  dl = fit_log_delta (y, wt);
+  dl = 1;
+  if (any (strcmp (weight, {"relative", "log"})))
+    dl = fit_log_delta (y, wt);
+  endif
   switch (weight)
     case {"plain", "log"}
       w2 = ones (size (y));
