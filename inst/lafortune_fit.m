@@ -104,7 +104,7 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
   endif
   opt = parse_opts (varargin, "lafortune_fit",
                     struct ("weight", "plain", "max_iter", 100, "tol", 1e-7, "tries", 1,
-                            "screen_iter", 8, "screen_samples", 2000, "reduce", "auto",
+                            "screen_iter", 8, "screen_samples", 500, "reduce", "auto",
                             "start", [], "init", "grow", "jacobian", "analytic",
                             "bounds", true, "channels", 1:3));
   opt = check_opts (opt, nlobes);

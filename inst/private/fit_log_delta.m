@@ -17,6 +17,10 @@ function d = fit_log_delta (y, wt = [])
     d = 1;
     return;
   endif
+  if (all (wt(k) == wt(find (k, 1))))
+    d = 0.01 * median (y(k));        # equal weights: the plain median
+    return;
+  endif
   [yp, o] = sort (y(k));
   c = cumsum (wt(k)(o));
   ## the weighted median (the plain median for equal weights)

@@ -5,7 +5,7 @@
 ## @deftypefn {} {@var{P} =} fit_starts (@var{D}, @var{p})
 ## Candidate starts for one more lobe on top of parameters @var{p}
 ## (private).  Each candidate lobe (forward lobes from steep to flat,
-## retro-reflective, near-normal directions; exponents 1 to 1e5, four per
+## retro-reflective, near-normal directions; exponents 1 to 1e5, two per
 ## decade) gets its best non-negative amplitude, together with a change of
 ## rho_d, by linear least squares against the residual of @var{p} on @var{D}
 ## (from fit_data); a lobe that is non-negligible on fewer than 0.2% of the
@@ -16,7 +16,7 @@ function P = fit_starts (D, p)
   ## directions (Cxy, Cz) of the families: forward lobes from steep to flat,
   ## retro-reflective, near-normal
   dirs = [-1 1; -1 0.7; -1 1.3; -1 0.4; -1 0.2; -1 2; 1 1; 0 1];
-  expo = 10 .^ (0:0.25:5);
+  expo = 10 .^ (0:0.5:5);
   m = rows (D.x);
   min_support = min (max (8, 0.002 * m), m);
   fcur = lafortune_core (p, D.x(:,1), D.x(:,2));
