@@ -12,23 +12,44 @@
 ## @var{S} is a struct with fields @code{wi}, @code{wo} (N x 3 unit
 ## directions, local frame) and @code{rgb} (N x 3), such as
 ## @code{merl_plane} (the paper's in-plane table) or @code{merl_samples}
-## (the whole hemisphere) return.  Each channel has 1 + 3 @var{nlobes}
-## parameters: rho_d, and Cxy, Cz, e per lobe (bounds rho_d >= 0,
-## 0 <= e <= 1e7); @code{leasqr} gets the analytic Jacobian.
+## (the whole hemisphere) return, and optionally @code{weight} (N x 1,
+## finite, >= 0, not all 0): each sample's weight in the least-squares
+## objective and in the reported errors (for example a quadrature weight, so
+## that the objective is an integral over directions); a sample of weight 0
+## is left out.  Each channel has 1 + 3 @var{nlobes} parameters: rho_d, and
+## Cxy, Cz, e per lobe (bounds rho_d >= 0, 0 <= e <= 1e7); @code{leasqr}
+## gets the analytic Jacobian.
+##
+## The model sees a pair of directions only through a = ux vx + uy vy and
+## c = uz vz, so samples with equal (a, c) are merged first (weights add,
+## values average): the fit is the same and every evaluation cheaper.  A
+## table of more than 20000 samples (such as every valid bin of the
+## hemisphere, about 920000) is reduced to a 512 x 512 grid of (a, c) cells
+## instead, finest around the mirror direction, at the weighted mean
+## (a, c) of their samples (see @code{"reduce"}); on the MERL stand-ins the
+## rmse on all samples then equals that of the fit on the exact groups to 6
+## digits.  The data are divided by their largest magnitude before the fit,
+## so that the fit does not depend on the data's units: fitting c*y gives c
+## times the fit of y (to about 1e-12) for any c > 0.  A channel with no
+## positive value raises the warning @code{lafortune:negativeData} (a BRDF
+## is non-negative) and gets the zero model.
 ##
 ## Initialisation is deterministic: the (k+1)-lobe fit starts from the
-## k-lobe solution plus one new lobe, chosen among candidate starts
-## (forward/specular, retro-reflective, off-specular, near-normal; exponents
-## 1 to 1e5) by the best linear least-squares amplitude (a candidate that is
-## non-negligible on fewer than 0.2% of the samples is skipped); the best
-## start of each of the @code{"tries"} most promising direction families is
-## refined by Levenberg-Marquardt and the best result kept.  A result that
-## exceeds 10 times the data's maximum anywhere in the data's angular range
-## (checked on a 0.5-degree in-plane grid, where every lobe's base reaches its
-## extremes) is rejected: such a lobe fits a few samples and explodes between
-## them or toward grazing angles; the next start is tried instead
-## (@code{info.rejected} counts them).  As a start that adds a zero lobe reproduces the k-lobe error, the
-## error never increases with more lobes.
+## k-lobe solution plus one new lobe.  Candidate lobes (forward lobes from
+## steep to flat, retro-reflective, near-normal; exponents 1 to 1e5) get
+## their best amplitude, with a change of rho_d, by linear least squares on
+## a coarse grid of about @code{"screen_samples"} groups (a candidate that
+## is non-negligible on fewer than 0.2% of them is skipped); the best
+## candidate of each direction family is a start, best family first.  The
+## first start is refined by Levenberg-Marquardt, on the coarse grid first
+## when that is much smaller than the data, then on all groups.  A result
+## that exceeds 10 times the data's maximum anywhere in the data's angular
+## range (checked on a 0.5-degree in-plane grid, where every lobe's base
+## reaches its extremes) is rejected: such a lobe fits a few samples and
+## explodes between them or toward grazing angles; the next start is tried
+## instead (@code{info.rejected} counts them).  As a start that adds a zero
+## lobe reproduces the k-lobe error, the error never increases with more
+## lobes.
 ##
 ## Options:
 ## @table @code
@@ -36,8 +57,8 @@
 ## residual weighting: @code{"plain"} (default, as the paper),
 ## @code{"cosine"} (residual times cos theta_i, as Ngan et al. 2005),
 ## @code{"relative"} (residual divided by max (y, delta)) or @code{"log"}
-## (log (f + delta) - log (y + delta)); delta = 0.01 times the median of the
-## positive data.
+## (log (f + delta) - log (y + delta)); delta = 0.01 times the (weighted)
+## median of the positive data.
 ## @item "max_iter"
 ## Levenberg-Marquardt iterations per run (default 100; leasqr's own
 ## default is only 20).
@@ -45,15 +66,20 @@
 ## leasqr's tolerance on the fractional improvement of the sum of squares
 ## (default 1e-7).
 ## @item "tries"
-## candidate starts refined per added lobe (default 2): each gets
-## @code{"screen_iter"} iterations (default 8) on an evenly spaced subset of
-## about @code{"screen_samples"} samples (default 2000); the best is then
-## run to convergence on the subset and, from there, on all samples.
+## starts screened per added lobe (default 1): with more, the best start of
+## each of the first @code{"tries"} direction families gets
+## @code{"screen_iter"} iterations (default 8) on the coarse grid and the
+## best result goes on.
+## @item "screen_samples"
+## about how many groups the coarse grid for starts has (default 500).
+## @item "reduce"
+## @code{"auto"} (default: exact (a, c) groups up to 20000 samples, else
+## a 512 x 512 grid), @code{"exact"}, or n: an n x n grid of cells.
 ## @item "start"
 ## a model with @var{nlobes} lobes to start from instead (no growing).
 ## @item "init"
 ## @code{"grow"} (default, as above) or @code{"plain"}: the naive start
-## rho_d = 0.1, lobe k: Cxy = -1, Cz = 1, e = 10 k.
+## rho_d = 0.1, lobe k: Cxy = -1, Cz = 1, e = 10 k (in the data's units).
 ## @item "jacobian"
 ## @code{"analytic"} (default) or @code{"numeric"} (leasqr's finite
 ## differences, @code{dfdp}).
@@ -64,19 +90,25 @@
 ## lobes.
 ## @end table
 ##
-## @var{info} holds, per channel (1 x 3 arrays): @code{rmse},
-## @code{rel_rmse} (rmse / rms of the data), @code{log_rmse},
+## @var{info} holds @code{n} (samples), @code{groups} (how many the fit
+## ran on) and @code{reduce} (@code{"exact"} or @code{"grid N"}), and per
+## channel (1 x 3 arrays, each a mean weighted by @code{S.weight}):
+## @code{rmse}, @code{rel_rmse} (rmse / rms of the data), @code{log_rmse},
 ## @code{cos_rmse} (residual times cos theta_i), @code{iterations},
+## @code{full_iterations} (those on all groups), @code{rejected},
 ## @code{converged} (leasqr's flag), @code{time} (seconds), and
 ## @code{trace}, a 1 x 3 cell of K x 2 arrays [elapsed seconds, rmse]: the
 ## rmse of the best parameters found so far (best in the fit's own, possibly
-## weighted, objective) against run time, over all lobe counts of the growing
-## fit.  Only evaluations on all samples of accepted runs count (not the
-## screening on a subset, not rejected results), so the last row is
-## @code{info.rmse}; with the plain weighting the rmse never rises.  @code{info.history} is nlobes x 3: rmse
+## weighted, objective) against run time, over all lobe counts of the
+## growing fit.  Only evaluations on all groups of accepted runs count (not
+## the coarse grid, not rejected results), so the last row is
+## @code{info.rmse}; with the plain weighting the rmse never rises.  With
+## grid cells, the rows are the rmse on the cells and a last row the rmse on
+## all samples.  @code{info.history} is nlobes x 3: rmse on all samples
 ## after each lobe count, and @code{info.lobe_time} (nlobes x 3) the seconds
-## from the channel's start until that lobe count was done (growing mode).  @var{models} is a cell with the fitted models for
-## 1 .. @var{nlobes} lobes (growing mode).
+## from the channel's start until that lobe count was done (growing mode).
+## @var{models} is a cell with the fitted models for 1 .. @var{nlobes} lobes
+## (growing mode).
 ##
 ## A channel that did not converge within @code{max_iter} raises the
 ## warning @code{lafortune:notConverged}; its parameters are still finite.
@@ -88,6 +120,8 @@
 ## [m, info, all] = lafortune_fit (S, 3);
 ## info.history                                 # rmse for 1, 2, 3 lobes
 ## lafortune_export (all@{2@}, "gmp-2lobe.json", "json");
+## H = merl_samples (brdf);                     # every valid bin
+## m3 = lafortune_fit (H, 3);                   # on (a, c) cells, seconds
 ## @end group
 ## @end example
 ## @seealso{merl_plane, merl_samples, lafortune_eval, lafortune_export}

@@ -60,8 +60,8 @@ endfor
 
 ## the peer: scipy's MINPACK on the same table, model and start
 printf ("\nPeer: scipy.optimize.least_squares (method \"lm\", MINPACK, analytic Jacobian), same table and model,\n");
-printf ("from lafortune_fit's \"plain\" start; (c) lafortune_fit from that start; (b) lafortune_fit as above.\n");
-printf ("Time: best of %d, s, all 3 channels; rmse: mean over RGB.\n", reps);
+printf ("from lafortune_fit's \"plain\" start; (c) lafortune_fit from that start; (b) lafortune_fit as above (grown start).\n");
+printf ("Times: best of %d, all 3 channels, wall-clock s (processor s); ratio = lafortune_fit / scipy; rmse: mean over RGB.\n", reps);
 py = scipy_python ();
 if (isempty (py))
   printf ("skipped: scipy is absent (install Debian's python3-scipy to compare; it is no dependency of lafortune)\n");
@@ -73,21 +73,24 @@ else
   fclose (fid);
   [st, out] = system (sprintf ("%s %s %s 3 %d", py, fullfile (here, "bench_fit_scipy.py"), tab, reps));
   unlink (tab);
-  P = sscanf (out, "%f", [6 Inf]).';
+  P = sscanf (out, "%f", [7 Inf]).';
   if (st != 0 || rows (P) != 3)
     printf ("skipped: the scipy peer failed: %s\n", out);
   else
-    printf ("%-6s | %-9s %-9s | %-9s %-9s | %-9s %-9s | %-9s %-9s | %-9s %-9s\n", "lobes", "scipy s", "scipy rms", ...
-            "(c) s", "(c) rmse", "(b) s", "(b) rmse", "(c)/scipy", "rmse c/s", "(b)/scipy", "rmse b/s");
+    printf ("%-5s | %-15s %-9s | %-15s %-9s | %-15s %-9s | %-11s %-9s | %-11s %-9s\n", "lobes", "scipy s (cpu)", "rmse", ...
+            "(c) s (cpu)", "rmse", "(b) s (cpu)", "rmse", "(c)/scipy", "rmse c/s", "(b)/scipy", "rmse b/s");
     for k = 1:3
-      tc = Inf;
+      tc = tb = cc = cb = Inf;
       for r = 1:reps
-        tic; [~, ic] = lafortune_fit (S, k, "init", "plain"); tc = min (tc, toc);
+        t0 = tic (); c0 = cputime (); [~, ic] = lafortune_fit (S, k, "init", "plain");
+        cc = min (cc, cputime () - c0); tc = min (tc, toc (t0));
+        t0 = tic (); c0 = cputime (); [~, ib] = lafortune_fit (S, k);
+        cb = min (cb, cputime () - c0); tb = min (tb, toc (t0));
       endfor
       rs = mean (P(k,3:5));
-      printf ("%-6d | %-9.3f %-9.5g | %-9.3f %-9.5g | %-9.3f %-9.5g | %-9.2f %-9.5f | %-9.2f %-9.5f\n", k, ...
-              P(k,2), rs, tc, mean (ic.rmse), tb(k), rb(k), tc / P(k,2), mean (ic.rmse) / rs, ...
-              tb(k) / P(k,2), rb(k) / rs);
+      printf ("%-5d | %-6.3f (%.3f) %-9.5g | %-6.3f (%.3f) %-9.5g | %-6.3f (%.3f) %-9.5g | %.2f (%.2f) %-9.6f | %.2f (%.2f) %-9.6f\n", ...
+              k, P(k,2), P(k,7), rs, tc, cc, mean (ic.rmse), tb, cb, mean (ib.rmse), ...
+              tc / P(k,2), cc / P(k,7), mean (ic.rmse) / rs, tb / P(k,2), cb / P(k,7), mean (ib.rmse) / rs);
     endfor
   endif
 endif
@@ -107,6 +110,13 @@ for red = {"auto", 256, 128}
           max (abs (fg(:) - fe(:))) / max (fe(:)), tg / te);
 endfor
 printf ("%-14s | %-8d | %-8.2f | %-10.5g |\n", ie.reduce, ie.groups, te, mean (ie.rmse));
+proxy2 = bench_data ("red-plastic");
+if (! isempty (proxy2))
+  H2 = merl_samples (merl_read (proxy2));
+  tic; [~, i2] = lafortune_fit (H2, 3); t2 = toc;
+  printf ("red-plastic, every valid bin (%d samples), 3 lobes RGB, default (%s, %d groups): %.2f s, rmse %.5g\n", ...
+          rows (H2.wi), i2.reduce, i2.groups, t2, mean (i2.rmse));
+endif
 
 ## stiff synthetic ground truth: where the plain start fails
 printf ("\nStiff synthetic ground truth (noise free, in-plane at 0.5 deg): relative rmse, green channel\n");
