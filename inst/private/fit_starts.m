@@ -57,7 +57,7 @@ function P = fit_starts (D, p)
     F = fcur + d;
     F(on,:) += g .* s;
     obj = sqrt ((sum (w2 .* (D.ty - fit_tf (D, F)) .^ 2, 1) + D.wsw) / D.n);
-    cand = [cand; obj(:), d(:), a(ok)(:) * dirs(i,:), expo(ok)(:), repmat(i, numel (s), 1)];
+    cand = [cand; obj(:), d(:), a(ok)(:) * dirs(i,:), expo(ok)(:), i * ones(numel (s), 1)];
   endfor
   if (isempty (cand))
     P = zeros (numel (p) + 3, 0);
@@ -66,6 +66,6 @@ function P = fit_starts (D, p)
   [~, order] = sort (cand(:,1));
   [~, first] = unique (cand(order,6), "first");
   order = order(sort (first));
-  P = [repmat(p, 1, numel (order)); cand(order,3:5).'];
+  P = [p(:,ones (1, numel (order))); cand(order,3:5).'];
   P(1,:) = max (p(1) + pi * cand(order,2).', 0);
 endfunction
