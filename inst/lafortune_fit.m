@@ -12,23 +12,44 @@
 ## @var{S} is a struct with fields @code{wi}, @code{wo} (N x 3 unit
 ## directions, local frame) and @code{rgb} (N x 3), such as
 ## @code{merl_plane} (the paper's in-plane table) or @code{merl_samples}
-## (the whole hemisphere) return.  Each channel has 1 + 3 @var{nlobes}
-## parameters: rho_d, and Cxy, Cz, e per lobe (bounds rho_d >= 0,
-## 0 <= e <= 1e7); @code{leasqr} gets the analytic Jacobian.
+## (the whole hemisphere) return, and optionally @code{weight} (N x 1,
+## finite, >= 0, not all 0): each sample's weight in the least-squares
+## objective and in the reported errors (for example a quadrature weight, so
+## that the objective is an integral over directions); a sample of weight 0
+## is left out.  Each channel has 1 + 3 @var{nlobes} parameters: rho_d, and
+## Cxy, Cz, e per lobe (bounds rho_d >= 0, 0 <= e <= 1e7); @code{leasqr}
+## gets the analytic Jacobian.
+##
+## The model sees a pair of directions only through a = ux vx + uy vy and
+## c = uz vz, so samples with equal (a, c) are merged first (weights add,
+## values average): the fit is the same and every evaluation cheaper.  A
+## table of more than 20000 samples (such as every valid bin of the
+## hemisphere, about 920000) is reduced to a 512 x 512 grid of (a, c) cells
+## instead, finest around the mirror direction, at the weighted mean
+## (a, c) of their samples (see @code{"reduce"}); on the MERL stand-ins the
+## rmse on all samples then equals that of the fit on the exact groups to 6
+## digits.  The data are divided by their largest magnitude before the fit,
+## so that the fit does not depend on the data's units: fitting c*y gives c
+## times the fit of y (to about 1e-12) for any c > 0.  A channel with no
+## positive value raises the warning @code{lafortune:negativeData} (a BRDF
+## is non-negative) and gets the zero model.
 ##
 ## Initialisation is deterministic: the (k+1)-lobe fit starts from the
-## k-lobe solution plus one new lobe, chosen among candidate starts
-## (forward/specular, retro-reflective, off-specular, near-normal; exponents
-## 1 to 1e5) by the best linear least-squares amplitude (a candidate that is
-## non-negligible on fewer than 0.2% of the samples is skipped); the best
-## start of each of the @code{"tries"} most promising direction families is
-## refined by Levenberg-Marquardt and the best result kept.  A result that
-## exceeds 10 times the data's maximum anywhere in the data's angular range
-## (checked on a 0.5-degree in-plane grid, where every lobe's base reaches its
-## extremes) is rejected: such a lobe fits a few samples and explodes between
-## them or toward grazing angles; the next start is tried instead
-## (@code{info.rejected} counts them).  As a start that adds a zero lobe reproduces the k-lobe error, the
-## error never increases with more lobes.
+## k-lobe solution plus one new lobe.  Candidate lobes (forward lobes from
+## steep to flat, retro-reflective, near-normal; exponents 1 to 1e5) get
+## their best amplitude, with a change of rho_d, by linear least squares on
+## a coarse grid of about @code{"screen_samples"} groups (a candidate that
+## is non-negligible on fewer than 0.2% of them is skipped); the best
+## candidate of each direction family is a start, best family first.  The
+## first start is refined by Levenberg-Marquardt, on the coarse grid first
+## when that is much smaller than the data, then on all groups.  A result
+## that exceeds 10 times the data's maximum anywhere in the data's angular
+## range (checked on a 0.5-degree in-plane grid, where every lobe's base
+## reaches its extremes) is rejected: such a lobe fits a few samples and
+## explodes between them or toward grazing angles; the next start is tried
+## instead (@code{info.rejected} counts them).  As a start that adds a zero
+## lobe reproduces the k-lobe error, the error never increases with more
+## lobes.
 ##
 ## Options:
 ## @table @code
@@ -36,8 +57,8 @@
 ## residual weighting: @code{"plain"} (default, as the paper),
 ## @code{"cosine"} (residual times cos theta_i, as Ngan et al. 2005),
 ## @code{"relative"} (residual divided by max (y, delta)) or @code{"log"}
-## (log (f + delta) - log (y + delta)); delta = 0.01 times the median of the
-## positive data.
+## (log (f + delta) - log (y + delta)); delta = 0.01 times the (weighted)
+## median of the positive data.
 ## @item "max_iter"
 ## Levenberg-Marquardt iterations per run (default 100; leasqr's own
 ## default is only 20).
@@ -45,15 +66,20 @@
 ## leasqr's tolerance on the fractional improvement of the sum of squares
 ## (default 1e-7).
 ## @item "tries"
-## candidate starts refined per added lobe (default 2): each gets
-## @code{"screen_iter"} iterations (default 8) on an evenly spaced subset of
-## about @code{"screen_samples"} samples (default 2000); the best is then
-## run to convergence on the subset and, from there, on all samples.
+## starts screened per added lobe (default 1): with more, the best start of
+## each of the first @code{"tries"} direction families gets
+## @code{"screen_iter"} iterations (default 8) on the coarse grid and the
+## best result goes on.
+## @item "screen_samples"
+## about how many groups the coarse grid for starts has (default 500).
+## @item "reduce"
+## @code{"auto"} (default: exact (a, c) groups up to 20000 samples, else
+## a 512 x 512 grid), @code{"exact"}, or n: an n x n grid of cells.
 ## @item "start"
 ## a model with @var{nlobes} lobes to start from instead (no growing).
 ## @item "init"
 ## @code{"grow"} (default, as above) or @code{"plain"}: the naive start
-## rho_d = 0.1, lobe k: Cxy = -1, Cz = 1, e = 10 k.
+## rho_d = 0.1, lobe k: Cxy = -1, Cz = 1, e = 10 k (in the data's units).
 ## @item "jacobian"
 ## @code{"analytic"} (default) or @code{"numeric"} (leasqr's finite
 ## differences, @code{dfdp}).
@@ -64,19 +90,25 @@
 ## lobes.
 ## @end table
 ##
-## @var{info} holds, per channel (1 x 3 arrays): @code{rmse},
-## @code{rel_rmse} (rmse / rms of the data), @code{log_rmse},
+## @var{info} holds @code{n} (samples), @code{groups} (how many the fit
+## ran on) and @code{reduce} (@code{"exact"} or @code{"grid N"}), and per
+## channel (1 x 3 arrays, each a mean weighted by @code{S.weight}):
+## @code{rmse}, @code{rel_rmse} (rmse / rms of the data), @code{log_rmse},
 ## @code{cos_rmse} (residual times cos theta_i), @code{iterations},
+## @code{full_iterations} (those on all groups), @code{rejected},
 ## @code{converged} (leasqr's flag), @code{time} (seconds), and
 ## @code{trace}, a 1 x 3 cell of K x 2 arrays [elapsed seconds, rmse]: the
 ## rmse of the best parameters found so far (best in the fit's own, possibly
-## weighted, objective) against run time, over all lobe counts of the growing
-## fit.  Only evaluations on all samples of accepted runs count (not the
-## screening on a subset, not rejected results), so the last row is
-## @code{info.rmse}; with the plain weighting the rmse never rises.  @code{info.history} is nlobes x 3: rmse
+## weighted, objective) against run time, over all lobe counts of the
+## growing fit.  Only evaluations on all groups of accepted runs count (not
+## the coarse grid, not rejected results), so the last row is
+## @code{info.rmse}; with the plain weighting the rmse never rises.  With
+## grid cells, the rows are the rmse on the cells and a last row the rmse on
+## all samples.  @code{info.history} is nlobes x 3: rmse on all samples
 ## after each lobe count, and @code{info.lobe_time} (nlobes x 3) the seconds
-## from the channel's start until that lobe count was done (growing mode).  @var{models} is a cell with the fitted models for
-## 1 .. @var{nlobes} lobes (growing mode).
+## from the channel's start until that lobe count was done (growing mode).
+## @var{models} is a cell with the fitted models for 1 .. @var{nlobes} lobes
+## (growing mode).
 ##
 ## A channel that did not converge within @code{max_iter} raises the
 ## warning @code{lafortune:notConverged}; its parameters are still finite.
@@ -88,6 +120,8 @@
 ## [m, info, all] = lafortune_fit (S, 3);
 ## info.history                                 # rmse for 1, 2, 3 lobes
 ## lafortune_export (all@{2@}, "gmp-2lobe.json", "json");
+## H = merl_samples (brdf);                     # every valid bin
+## m3 = lafortune_fit (H, 3);                   # on (a, c) cells, seconds
 ## @end group
 ## @end example
 ## @seealso{merl_plane, merl_samples, lafortune_eval, lafortune_export}
@@ -103,10 +137,126 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
            num2str (nlobes));
   endif
   opt = parse_opts (varargin, "lafortune_fit",
-                    struct ("weight", "plain", "max_iter", 100, "tol", 1e-7, "tries", 2,
-                            "screen_iter", 8, "screen_samples", 2000,
+                    struct ("weight", "plain", "max_iter", 100, "tol", 1e-7, "tries", 1,
+                            "screen_iter", 8, "screen_samples", 500, "reduce", "auto",
                             "start", [], "init", "grow", "jacobian", "analytic",
                             "bounds", true, "channels", 1:3));
+  opt = check_opts (opt, nlobes);
+  pkg_load_optim ();
+
+  ## a sample of weight 0 is left out
+  keep = S.weight > 0;
+  if (! all (keep))
+    S.wi = S.wi(keep,:); S.wo = S.wo(keep,:); S.rgb = S.rgb(keep,:); S.weight = S.weight(keep);
+  endif
+  x = [S.wi(:,1) .* S.wo(:,1) + S.wi(:,2) .* S.wo(:,2), S.wi(:,3) .* S.wo(:,3)];
+  cosi = S.wi(:,3);
+  wt = S.weight;
+  [j, xc, jr, xr, info_reduce] = groups (x, wt, opt);
+  G = fit_guard (min ([S.wi(:,3); S.wo(:,3)]));
+  z = zeros (nlobes, 3);
+  model = struct ("rho_d", [0 0 0], "Cxy", z, "Cz", z, "e", z + 1);
+  models = cell (1, nlobes);
+  for k = 1:nlobes
+    models{k} = struct ("rho_d", [0 0 0], "Cxy", zeros (k, 3), "Cz", zeros (k, 3), "e", ones (k, 3));
+  endfor
+  nan3 = nan (1, 3);
+  info = struct ("nlobes", nlobes, "weight", opt.weight, "n", rows (x),
+                 "groups", rows (xc), "reduce", info_reduce,
+                 "rmse", nan3, "rel_rmse", nan3, "log_rmse", nan3, "cos_rmse", nan3,
+                 "iterations", zeros (1, 3), "full_iterations", zeros (1, 3),
+                 "rejected", zeros (1, 3), "converged", true (1, 3), "time", zeros (1, 3),
+                 "trace", {cell(1, 3)}, "history", nan (nlobes, 3),
+                 "lobe_time", nan (nlobes, 3));
+  for c = opt.channels(:)'
+    t0 = tic ();
+    y = S.rgb(:,c);
+    if (any (y < 0) && ! any (y > 0))
+      warning ("lafortune:negativeData",
+               "lafortune_fit: channel %d has no positive value (a BRDF is non-negative); its fit is the zero model",
+               c);
+    endif
+    D = fit_data (x, y, wt, cosi, opt.weight, j, xc);
+    if (isequal (jr, j))
+      R = D;
+    else
+      R = fit_data (x, y, wt, cosi, opt.weight, jr, xr);
+    endif
+    if (! isempty (opt.start))
+      p0 = fit_unscale (model_params (opt.start, c), 1 / D.s);
+      ch = fit_channel (D, R, nlobes, opt, G, p0);
+    elseif (strcmp (opt.init, "plain"))
+      ## the paper's naive start, in the data's units
+      p0 = [0.1; repmat([-1; 1; 0], nlobes, 1)];
+      p0(4:3:end) = 10 * (1:nlobes);
+      ch = fit_channel (D, R, nlobes, opt, G, fit_unscale (p0, 1 / D.s));
+    else
+      ch = fit_channel (D, R, nlobes, opt, G);
+    endif
+    p = fit_unscale (ch.p, D.s);
+    model = set_params (model, c, p);
+    for k = 1:numel (ch.ps)
+      if (! isempty (ch.ps{k}) && k < nlobes)
+        pk = fit_unscale (ch.ps{k}, D.s);
+        models{k} = set_params (models{k}, c, pk);
+        info.history(k,c) = fit_metrics (lafortune_core (pk, x(:,1), x(:,2)), y, cosi, wt).rmse;
+      endif
+    endfor
+    e = fit_metrics (lafortune_core (p, x(:,1), x(:,2)), y, cosi, wt);
+    info.history(nlobes,c) = e.rmse;
+    models{nlobes} = set_params (models{nlobes}, c, p);
+    info.time(c) = toc (t0);
+    info.rmse(c) = e.rmse; info.rel_rmse(c) = e.rel_rmse;
+    info.log_rmse(c) = e.log_rmse; info.cos_rmse(c) = e.cos_rmse;
+    info.iterations(c) = ch.iter;
+    info.full_iterations(c) = ch.full_iter;
+    info.rejected(c) = ch.rejected;
+    info.converged(c) = ch.cvg;
+    info.lobe_time(:,c) = ch.ktime(:);
+    info.trace{c} = best_trace (ch.trace, info.time(c), e.rmse, strcmp (info_reduce, "exact"));
+    if (! ch.cvg)
+      warning ("lafortune:notConverged",
+               "lafortune_fit: channel %d (%d lobes) did not converge in %d iterations; the parameters are finite but may not be optimal",
+               c, nlobes, opt.max_iter);
+    endif
+  endfor
+  if (! strcmp (opt.init, "grow") || ! isempty (opt.start))
+    models = {model};
+  endif
+endfunction
+
+function S = check_samples (S)
+  if (! isstruct (S) || ! isscalar (S) || ! all (isfield (S, {"wi", "wo", "rgb"})))
+    error ("lafortune:badSamples",
+           "lafortune_fit: S must be a struct with fields wi, wo, rgb (see merl_plane)");
+  endif
+  [S.wi, S.wo] = check_dirs (S.wi, S.wo, "lafortune_fit");
+  n = rows (S.wi);
+  if (! isnumeric (S.rgb) || ! isreal (S.rgb) || ! isequal (size (S.rgb), [n 3]))
+    error ("lafortune:badSamples", "lafortune_fit: S.rgb must be real N x 3 with N = rows (S.wi) = %d",
+           n);
+  endif
+  if (! all (isfinite (S.rgb(:))))
+    error ("lafortune:badSamples", "lafortune_fit: S.rgb must be finite (drop invalid samples)");
+  endif
+  if (n < 4)
+    error ("lafortune:badSamples", "lafortune_fit: S needs at least 4 samples, got %d", n);
+  endif
+  S.rgb = double (S.rgb);
+  if (isfield (S, "weight") && ! isempty (S.weight))
+    w = S.weight;
+    if (! isnumeric (w) || ! isreal (w) || ! isvector (w) || numel (w) != n
+        || ! all (isfinite (w)) || any (w < 0) || ! any (w > 0))
+      error ("lafortune:badSamples",
+             "lafortune_fit: S.weight must be N x 1 (N = %d), finite, >= 0 and not all zero", n);
+    endif
+    S.weight = double (w(:));
+  else
+    S.weight = ones (n, 1);
+  endif
+endfunction
+
+function opt = check_opts (opt, nlobes)
   weights = {"plain", "cosine", "relative", "log"};
   if (! ischar (opt.weight) || ! any (strcmp (opt.weight, weights)))
     error ("lafortune:badOption", "lafortune_fit: WEIGHT must be one of %s",
@@ -127,6 +277,15 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
   if (! isscalar (opt.tries) || ! (opt.tries >= 1))
     error ("lafortune:badOption", "lafortune_fit: TRIES must be a positive integer");
   endif
+  if (! isscalar (opt.screen_samples) || ! (opt.screen_samples >= 1))
+    error ("lafortune:badOption", "lafortune_fit: SCREEN_SAMPLES must be a positive number");
+  endif
+  if (! ((ischar (opt.reduce) && any (strcmp (opt.reduce, {"auto", "exact"})))
+         || (isnumeric (opt.reduce) && isscalar (opt.reduce) && opt.reduce >= 1
+             && opt.reduce == fix (opt.reduce))))
+    error ("lafortune:badOption",
+           "lafortune_fit: REDUCE must be \"auto\", \"exact\" or a positive integer (grid cells per axis)");
+  endif
   if (! isempty (opt.start))
     opt.start = check_model (opt.start, "lafortune_fit");
     if (rows (opt.start.Cxy) != nlobes)
@@ -134,399 +293,70 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
              rows (opt.start.Cxy), nlobes);
     endif
   endif
-  if (! isnumeric (opt.channels) || any (! ismember (opt.channels, 1:3)))
+  if (! isnumeric (opt.channels) || isempty (opt.channels) || any (! ismember (opt.channels, 1:3)))
     error ("lafortune:badOption", "lafortune_fit: CHANNELS must be a subset of 1:3");
   endif
-  pkg_load_optim ();
+endfunction
 
-  x = [S.wi(:,1) .* S.wo(:,1) + S.wi(:,2) .* S.wo(:,2), S.wi(:,3) .* S.wo(:,3)];
-  cosi = S.wi(:,3);
-  opt.guard = guard_set (S);
-  z = zeros (nlobes, 3);
-  model = struct ("rho_d", [0 0 0], "Cxy", z, "Cz", z, "e", z);
-  models = cell (1, nlobes);
-  for k = 1:nlobes
-    models{k} = struct ("rho_d", [0 0 0], "Cxy", zeros (k, 3), "Cz", zeros (k, 3), "e", ones (k, 3));
-  endfor
-  model.e(:) = 1;
-  nan3 = nan (1, 3);
-  info = struct ("nlobes", nlobes, "weight", opt.weight, "n", rows (x),
-                 "rmse", nan3, "rel_rmse", nan3, "log_rmse", nan3, "cos_rmse", nan3,
-                 "iterations", zeros (1, 3), "full_iterations", zeros (1, 3), "rejected", zeros (1, 3), "converged", true (1, 3), "time", zeros (1, 3),
-                 "trace", {cell(1, 3)}, "history", nan (nlobes, 3),
-                 "lobe_time", nan (nlobes, 3));
-  for c = opt.channels(:)'
-    y = S.rgb(:,c);
-    t0 = tic ();
-    fit_trace ("start");
-    opt.channel = c;
-    ch = fit_channel (x, y, cosi, nlobes, opt);
-    info.time(c) = toc (t0);
-    p = ch.p;
-    model.rho_d(c) = p(1);
-    L = reshape (p(2:end), 3, []).';
-    model.Cxy(:,c) = L(:,1); model.Cz(:,c) = L(:,2); model.e(:,c) = L(:,3);
-    for k = 1:numel (ch.ps)
-      if (isempty (ch.ps{k}))
-        continue;
+## The groups the fit runs on (J, XC: exact equal (a, c) pairs, or grid
+## cells when there are more than AUTO_GROUPS samples, or as "reduce" says)
+## and the coarser groups that screen starts (JR, XR: about "screen_samples"
+## cells, or the groups themselves when there are no more than that).
+function [j, xc, jr, xr, how] = groups (x, wt, opt)
+  AUTO_GROUPS = 20000;
+  AUTO_GRID = 512;
+  if (isnumeric (opt.reduce))
+    n = opt.reduce;
+  elseif (strcmp (opt.reduce, "auto") && rows (x) > AUTO_GROUPS)
+    n = AUTO_GRID;
+  else
+    n = Inf;
+  endif
+  [j, xc] = fit_reduce (x, wt, n);
+  if (isinf (n))
+    how = "exact";
+  else
+    how = sprintf ("grid %d", n);
+  endif
+  jr = j; xr = xc;
+  if (rows (xc) > opt.screen_samples)
+    ## coarsen the groups (cells of about the wanted count)
+    gw = accumarray (j, wt);
+    n = 2 ^ ceil (log2 (sqrt (opt.screen_samples)));
+    while (true)
+      [jg, xr] = fit_reduce (xc, gw, n);
+      if (rows (xr) >= opt.screen_samples / 2 || n >= 4096)
+        break;
       endif
-      Lk = reshape (ch.ps{k}(2:end), 3, []).';
-      models{k}.rho_d(c) = ch.ps{k}(1);
-      models{k}.Cxy(:,c) = Lk(:,1); models{k}.Cz(:,c) = Lk(:,2); models{k}.e(:,c) = Lk(:,3);
-    endfor
-    f = lafortune_core (p, x(:,1), x(:,2));
-    e = error_stats (f, y, cosi);
-    info.rmse(c) = e.rmse; info.rel_rmse(c) = e.rel_rmse;
-    info.log_rmse(c) = e.log_rmse; info.cos_rmse(c) = e.cos_rmse;
-    info.iterations(c) = ch.iter;
-    info.full_iterations(c) = ch.full_iter;
-    info.rejected(c) = ch.rejected;
-    info.converged(c) = ch.cvg;
-    info.history(1:numel (ch.hist),c) = ch.hist(:);
-    info.lobe_time(1:numel (ch.ktime),c) = ch.ktime(:);
-    T = fit_trace ("get");
-    if (isempty (T))
-      info.trace{c} = [info.time(c), e.rmse];
-    else
-      [~, best] = cummin (T(:,2));
-      info.trace{c} = [T(:,1), T(best,3)];
-    endif
-    if (! ch.cvg)
-      warning ("lafortune:notConverged",
-               "lafortune_fit: channel %d (%d lobes) did not converge in %d iterations; the parameters are finite but may not be optimal",
-               c, nlobes, opt.max_iter);
-    endif
-  endfor
-  if (! strcmp (opt.init, "grow") || ! isempty (opt.start))
-    models = {model};
+      n *= 2;
+    endwhile
+    jr = jg(j);
   endif
 endfunction
 
-function S = check_samples (S)
-  if (! isstruct (S) || ! isscalar (S) || ! all (isfield (S, {"wi", "wo", "rgb"})))
-    error ("lafortune:badSamples",
-           "lafortune_fit: S must be a struct with fields wi, wo, rgb (see merl_plane)");
-  endif
-  [S.wi, S.wo] = check_dirs (S.wi, S.wo, "lafortune_fit");
-  if (! isnumeric (S.rgb) || ! isreal (S.rgb) || ! isequal (size (S.rgb), [rows(S.wi) 3]))
-    error ("lafortune:badSamples", "lafortune_fit: S.rgb must be real N x 3 with N = rows (S.wi) = %d",
-           rows (S.wi));
-  endif
-  if (! all (isfinite (S.rgb(:))))
-    error ("lafortune:badSamples", "lafortune_fit: S.rgb must be finite (drop invalid samples)");
-  endif
-  if (rows (S.wi) < 4)
-    error ("lafortune:badSamples", "lafortune_fit: S needs at least 4 samples, got %d", rows (S.wi));
-  endif
-  S.rgb = double (S.rgb);
-endfunction
-
-## Direction pairs that span the data's angular range: the in-plane pairs,
-## which reach the extremes of every lobe's base (ux vx + uy vy is largest in
-## size in the plane).  A fitted model may not exceed GUARD_FACTOR times the
-## data's maximum on them: a lobe that fits a few samples and explodes
-## between them (or toward grazing angles) is rejected.
-function G = guard_set (S)
-  amax = acosd (max (min ([S.wi(:,3); S.wo(:,3)]), 0));
-  t = linspace (0, amax, max (2, ceil (amax / 0.5) + 1));
-  [TI, TO] = ndgrid (t, [-fliplr(t(2:end)), t]);
-  G = [sind(TI(:)) .* sind(TO(:)), cosd(TI(:)) .* cosd(TO(:))];
-endfunction
-
-function ok = guard_ok (p, G, ymax)
-  g = lafortune_core (p, G(:,1), G(:,2));
-  ok = all (isfinite (g)) && max (g) <= 10 * max (ymax, realmin);
-endfunction
-
-function e = error_stats (f, y, cosi)
-  r = f - y;
-  e.rmse = sqrt (mean (r .^ 2));
-  e.rel_rmse = e.rmse / max (sqrt (mean (y .^ 2)), realmin);
-  if (e.rmse == 0)
-    e.rel_rmse = 0;
-  endif
-  d = log_delta (y);
-  e.log_rmse = sqrt (mean ((log (max (f, 0) + d) - log (max (y, 0) + d)) .^ 2));
-  e.cos_rmse = sqrt (mean ((r .* cosi) .^ 2));
-endfunction
-
-function d = log_delta (y)
-  yp = y(y > 0);
-  if (isempty (yp))
-    d = 1;
-  else
-    d = 0.01 * median (yp);
-  endif
-endfunction
-
-## --- one channel ----------------------------------------------------------
-## The objective is sum_i (w_i (ty_i - tf(f_i)))^2, tf = identity or log.
-## Samples with the same (sxy, sz) have the same model value, so they are
-## merged first (weights add, targets average): the minimiser is exactly the
-## same and every evaluation is cheaper (the in-plane table holds each pair
-## of angles twice, as (ti, to) and (-to, -ti)).
-function D = make_data (x, y, ty, w, wlin)
-  [xg, ~, j] = unique (x, "rows");
-  W = accumarray (j, w .^ 2);
-  Wl = accumarray (j, wlin .^ 2);
-  cnt = accumarray (j, 1);
-  D.x = xg;
-  D.w = sqrt (W);
-  D.ty = accumarray (j, w .^ 2 .* ty) ./ max (W, realmin);
-  D.wl = sqrt (Wl);
-  D.yl = accumarray (j, wlin .^ 2 .* y) ./ max (Wl, realmin);
-  D.cnt = cnt;
-  D.ybar = accumarray (j, y) ./ cnt;
-  D.n = numel (y);
-  D.ssw = sum ((y - D.ybar(j)) .^ 2);              # plain, within groups
-  D.wsw = sum ((w .* (ty - D.ty(j))) .^ 2);        # weighted, within groups
-endfunction
-
-function E = subset (D, k)
-  E = D;
-  for f = {"x", "w", "ty", "wl", "yl", "cnt", "ybar"}
-    E.(f{1}) = D.(f{1})(k,:);
-  endfor
-  ## a subset's own within-group terms are not needed: it only ranks starts
-  E.n = sum (E.cnt); E.ssw = 0; E.wsw = 0;
-endfunction
-
-function e = plain_rmse (D, f)
-  e = sqrt ((sum (D.cnt .* (D.ybar - f) .^ 2) + D.ssw) / D.n);
-endfunction
-
-function o = objective (D, f, islog, dl)
-  o = sqrt ((sum ((D.w .* (D.ty - tfun (f, islog, dl))) .^ 2) + D.wsw) / D.n);
-endfunction
-
-function ch = fit_channel (x, y, cosi, nlobes, opt)
-  dl = log_delta (y);
-  switch (opt.weight)
-    case {"plain", "log"}
-      w = ones (size (y));
-    case "cosine"
-      w = cosi;
-    case "relative"
-      w = 1 ./ max (y, dl);
-  endswitch
-  islog = strcmp (opt.weight, "log");
-  if (islog)
-    ty = log (max (y, 0) + dl);
-    wlin = 1 ./ (max (y, 0) + dl);     # first-order weights for amplitudes
-  else
-    ty = y;
-    wlin = w;
-  endif
-  D = make_data (x, y, ty, w, wlin);
-  F = @(p) lafortune_core (p, D.x(:,1), D.x(:,2));
-
-  ch = struct ("p", [], "ps", {{}}, "hist", [], "iter", 0, "cvg", true, "full_iter", 0,
-               "rejected", 0);
-  if (! isempty (opt.start) || strcmp (opt.init, "plain"))
-    if (! isempty (opt.start))
-      p0 = start_params (opt.start, opt.channel);
-    else
-      p0 = [0.1; repmat([-1; 1; 0], nlobes, 1)];
-      p0(4:3:end) = 10 * (1:nlobes);
-    endif
-    [ch.p, ch.iter, ch.cvg] = run_lm (D, p0, opt, islog, dl, true);
-    fit_trace ("commit");
-    ch.full_iter = ch.iter;
-    ch.ps = cell (1, nlobes);
-    ch.ps{nlobes} = ch.p;
-    ch.hist = nan (1, nlobes);
-    ch.hist(nlobes) = plain_rmse (D, F (ch.p));
-    ch.ktime = nan (1, nlobes);
+## [seconds, rmse of the best parameters so far (best in the fit's own
+## objective)] from rows [seconds, objective, rmse]; when the groups are grid
+## cells (EXACT false), a last row holds the fit's rmse on all samples
+function T = best_trace (R, t, err, exact)
+  if (isempty (R))
+    T = [t, err];
     return;
   endif
-
-  t0 = tic ();
-  ch.ktime = nan (1, nlobes);
-  ## 0 lobes: rho_d by weighted least squares
-  rho = pi * sum (D.wl .^ 2 .* D.yl) / max (sum (D.wl .^ 2), realmin);
-  p = max (rho, 0);
-  cur_obj = objective (D, F (p), islog, dl);
-  fit_trace ("add", cur_obj, plain_rmse (D, F (p)));
-  fit_trace ("commit");
-  dirs = [-1 1; 1 1; -1 0.7; -1 1.3; 0 1];
-  ## candidate starts are screened on an evenly spaced subset
-  m = rows (D.x);
-  sub = (1:max (1, floor (m / opt.screen_samples)):m)';
-  Ds = subset (D, sub);
-  min_support = min (max (8, 0.002 * m), m);
-  expo = [1 3 10 30 100 300 1e3 3e3 1e4 3e4 1e5];
-  for k = 1:nlobes
-    fcur = F (p);
-    r = D.yl - fcur;
-    cand = zeros (0, 5);     # [obj, cxy, cz, e, family]
-    for i = 1:rows (dirs)
-      for e = expo
-        g = lafortune_core ([0; dirs(i,:)'; e], D.x(:,1), D.x(:,2));
-        gg = sum ((D.wl .* g) .^ 2);
-        if (gg <= 0)
-          continue;
-        endif
-        s = max (sum (D.wl .^ 2 .* g .* r) / gg, 0);
-        if (s <= 0)
-          continue;
-        endif
-        a = s ^ (1 / e);
-        if (! isfinite (a) || a <= 0)
-          continue;
-        endif
-        ## a lobe that lives on a handful of samples is no start: skip it
-        if (nnz (g > 1e-3 * max (g)) < min_support)
-          continue;
-        endif
-        cand(end+1,:) = [objective(D, fcur + s * g, islog, dl), a * dirs(i,:), e, i];
-      endfor
-    endfor
-    best_p = [p; 0; 0; 1];   # a zero lobe: the k-1 lobe error exactly
-    best_obj = cur_obj;
-    best_iter = 0; best_cvg = true;
-    if (! isempty (cand) && cur_obj > 0)
-      ## the best start of each direction family, best families first; each
-      ## of the first TRIES gets a few iterations on the subset, the best
-      ## then converges on the subset and last on all samples
-      [~, order] = sort (cand(:,1));
-      [~, first] = unique (cand(order,5), "first");
-      order = order(sort (first));
-      screen = opt;
-      screen.max_iter = min (opt.screen_iter, opt.max_iter);
-      it_sum = 0;
-      ntry = min (opt.tries, numel (order));
-      if (ntry == 1)
-        starts = [p; cand(order(1),2:4)'];     # a single start needs no screening
-      else
-        starts = zeros (numel (p) + 3, ntry);
-        sobj = zeros (1, ntry);
-        for i = 1:ntry
-          [starts(:,i), it] = run_lm (Ds, [p; cand(order(i),2:4)'], screen, islog, dl);
-          it_sum += it;
-          sobj(i) = objective (Ds, lafortune_core (starts(:,i), Ds.x(:,1), Ds.x(:,2)), islog, dl);
-        endfor
-        ## the best screened start first
-        [~, so] = sort (sobj);
-        starts = starts(:,so);
-      endif
-      ## a result that explodes between the samples is rejected and the next
-      ## start tried
-      for ps = starts
-        if (numel (sub) < m)
-          [ps, it] = run_lm (Ds, ps, opt, islog, dl);
-          it_sum += it;
-        endif
-        [pj, it, cv] = run_lm (D, ps, opt, islog, dl, true);
-        it_sum += it;
-        ch.full_iter += it;
-        oj = objective (D, F (pj), islog, dl);
-        if (! guard_ok (pj, opt.guard, max (abs (y))))
-          ch.rejected += 1;
-          fit_trace ("drop");
-          continue;
-        endif
-        if (oj < best_obj)
-          best_obj = oj; best_p = pj; best_cvg = cv;
-          fit_trace ("commit");
-        else
-          fit_trace ("drop");
-        endif
-        break;
-      endfor
-      best_iter = it_sum;
-    endif
-    p = best_p;
-    cur_obj = best_obj;
-    ch.iter += best_iter;
-    ch.cvg = best_cvg;
-    ch.ps{k} = p;
-    ch.hist(k) = plain_rmse (D, F (p));
-    ch.ktime(k) = toc (t0);
-  endfor
-  ch.p = p;
-endfunction
-
-function t = tfun (f, islog, d)
-  if (islog)
-    t = log (max (f, 0) + d);
-  else
-    t = f;
+  [~, best] = cummin (R(:,2));
+  T = [R(:,1), R(best,3)];
+  if (! exact)
+    T(end+1,:) = [max(t, T(end,1)), err];
   endif
 endfunction
 
-function p0 = start_params (m, c)
-  p0 = [m.rho_d(c); reshape([m.Cxy(:,c) m.Cz(:,c) m.e(:,c)].', [], 1)];
+function p = model_params (m, c)
+  p = [m.rho_d(c); reshape([m.Cxy(:,c) m.Cz(:,c) m.e(:,c)].', [], 1)];
 endfunction
 
-## Levenberg-Marquardt on one channel through leasqr
-function [p, iter, cvg] = run_lm (D, p0, opt, islog, dl, record = false)
-  np = numel (p0);
-  F = @(xx, pp) model_fun (D, pp, islog, dl, record);
-  lb = -Inf (np, 1); ub = Inf (np, 1);
-  lb(1) = 0;
-  lb(4:3:end) = 0; ub(4:3:end) = 1e7;
-  p0 = min (max (p0, lb), ub);
-  options = struct ();
-  if (opt.bounds)
-    options.bounds = [lb ub];
-  endif
-  dp = 1e-3 * ones (np, 1);
-  if (strcmp (opt.jacobian, "analytic"))
-    dFdp = @(xx, f, pp, dpp, FF, varargin) model_jac (D, pp, islog, dl);
-  else
-    dFdp = "dfdp";
-  endif
-  ## leasqr reads the global 'verbose'; it must be false here.  Leave the
-  ## global space as it was found.
-  had = any (strcmp ("verbose", who ("global")));
-  global verbose;
-  old = verbose;
-  verbose = false;
-  unwind_protect
-    [~, p, cvg, iter] = quiet_leasqr (D.x, D.ty, p0, F, opt.tol, opt.max_iter, D.w, dp, dFdp, options);
-  unwind_protect_cleanup
-    if (had)
-      verbose = old;
-    else
-      clear -global verbose;
-    endif
-  end_unwind_protect
-  p = real (p(:));
-  if (! all (isfinite (p)))
-    p = p0;
-    cvg = false;
-  endif
-  if (opt.bounds)
-    p = min (max (p, lb), ub);
-  endif
-endfunction
-
-function varargout = quiet_leasqr (varargin)
-  ## leasqr prints " CONVERGENCE NOT ACHIEVED! " itself; we warn instead
-  args = varargin;
-  [out, varargout{1:4}] = evalc ("leasqr (args{:})");
-endfunction
-
-## F for leasqr; on all samples (RECORD) each evaluation is noted for the
-## error-against-time trace, kept only if the run's result is accepted
-function f = model_fun (D, p, islog, dl, record)
-  f = lafortune_core (p, D.x(:,1), D.x(:,2));
-  if (record)
-    ferr = plain_rmse (D, f);
-  endif
-  if (islog)
-    f = log (max (f, 0) + dl);
-  endif
-  if (record)
-    fit_trace ("add", sqrt ((sum ((D.w .* (D.ty - f)) .^ 2) + D.wsw) / D.n), ferr);
-  endif
-endfunction
-
-function J = model_jac (D, p, islog, dl)
-  [f, J] = lafortune_core (p, D.x(:,1), D.x(:,2));
-  if (islog)
-    J ./= (max (f, 0) + dl);
-  endif
+function m = set_params (m, c, p)
+  m.rho_d(c) = p(1);
+  L = reshape (p(2:end), 3, []).';
+  m.Cxy(:,c) = L(:,1); m.Cz(:,c) = L(:,2); m.e(:,c) = L(:,3);
 endfunction
 %!demo
 %! ## the paper's flow on a synthetic material: in-plane table, 1/2/3 lobes
@@ -709,6 +539,95 @@ endfunction
 %! [m, info] = lafortune_fit (S, 1, "init", "plain", "jacobian", "numeric", "bounds", false, "channels", 2);
 %! assert (all (isfinite ([m.rho_d m.Cxy(:)' m.Cz(:)' m.e(:)'])));
 
+%!test
+%! ## scale invariance: fit (c*y) = c*fit (y) in every weighting, c = 1e-12 .. 1e12
+%! truth = struct ("rho_d", [0.2 0.1 0.05], "Cxy", [-0.9 -1 -1.1], "Cz", [0.8 1 0.9], "e", [5 30 80]);
+%! S = __plane (truth, 0:4:80, -80:4:80);
+%! for w = {"plain", "cosine", "relative", "log"}
+%!   [m1, i1] = lafortune_fit (S, 1, "weight", w{1});
+%!   f1 = lafortune_eval (m1, S.wi, S.wo);
+%!   for c = 10 .^ (-12:4:12)
+%!     Sc = S; Sc.rgb = c * S.rgb;
+%!     [mc, ic] = lafortune_fit (Sc, 1, "weight", w{1});
+%!     fc = lafortune_eval (mc, S.wi, S.wo) / c;
+%!     assert (max (abs (fc(:) - f1(:))) <= 1e-9 * max (abs (f1(:))), sprintf ("%s, c = %g", w{1}, c));
+%!     assert (ic.rmse, c * i1.rmse, 1e-9 * c * max (S.rgb(:)));
+%!     assert (ic.rel_rmse < 1e-3);
+%!   endfor
+%! endfor
+
+%!test
+%! ## scale invariance of the grown 3-lobe fit on noisy data
+%! truth = struct ("rho_d", [0.05 0.1 0.02], "Cxy", [-1 -1 -1; -0.7 -0.6 -0.8; 0.5 0.5 0.5], ...
+%!                 "Cz", [1 1 1; 0.72 0.65 0.8; 0.5 0.5 0.5], "e", [200 150 300; 8 6 10; 3 3 3]);
+%! S = __plane (truth, 0:2:80, -80:2:80);
+%! randn ("state", 3);
+%! S.rgb .*= 1 + 0.05 * randn (size (S.rgb));
+%! [m1, i1] = lafortune_fit (S, 3, "channels", 2);
+%! f1 = lafortune_eval (m1, S.wi, S.wo)(:,2);
+%! for c = [1e-12 1e12]
+%!   Sc = S; Sc.rgb = c * S.rgb;
+%!   mc = lafortune_fit (Sc, 3, "channels", 2);
+%!   fc = lafortune_eval (mc, S.wi, S.wo)(:,2) / c;
+%!   assert (max (abs (fc - f1)) <= 1e-9 * max (f1));
+%! endfor
+
+%!test
+%! ## sample weights: an integer weight is the sample repeated; a zero weight
+%! ## leaves the sample out
+%! truth = struct ("rho_d", [0.2 0.2 0.2], "Cxy", -[1 1 1], "Cz", [1 1 1], "e", [50 50 50]);
+%! S = __plane (truth, 0:2:80, -80:2:80);
+%! randn ("state", 5);
+%! S.rgb .*= 1 + 0.2 * randn (size (S.rgb));
+%! n = rows (S.wi);
+%! k = 1 + mod ((1:n)', 3);                 # weights 1, 2, 3
+%! Sw = S; Sw.weight = k;
+%! r = repelem ((1:n)', k);
+%! Sr = struct ("wi", S.wi(r,:), "wo", S.wo(r,:), "rgb", S.rgb(r,:));
+%! [mw, iw] = lafortune_fit (Sw, 1, "channels", 1);
+%! [mr, ir] = lafortune_fit (Sr, 1, "channels", 1);
+%! fw = lafortune_eval (mw, S.wi, S.wo)(:,1); fr = lafortune_eval (mr, S.wi, S.wo)(:,1);
+%! assert (max (abs (fw - fr)) <= 1e-9 * max (fr));
+%! assert (iw.rmse(1), ir.rmse(1), 1e-9 * ir.rmse(1));
+%! z = mod ((1:n)', 4) == 0;
+%! Sz = S; Sz.weight = double (! z); Sz.rgb(z,:) = 1e3;   # garbage where the weight is 0
+%! So = struct ("wi", S.wi(! z,:), "wo", S.wo(! z,:), "rgb", S.rgb(! z,:));
+%! [mz, iz] = lafortune_fit (Sz, 1, "channels", 1);
+%! [mo, io] = lafortune_fit (So, 1, "channels", 1);
+%! fz = lafortune_eval (mz, S.wi, S.wo)(:,1); fo = lafortune_eval (mo, S.wi, S.wo)(:,1);
+%! assert (max (abs (fz - fo)) <= 1e-9 * max (fo));
+%! assert (iz.rmse(1), io.rmse(1), 1e-9 * io.rmse(1));
+
+%!test
+%! ## grid cells in (a, c) against the exact groups: the same fit to a small,
+%! ## bounded difference; noise-free data are recovered either way
+%! truth = struct ("rho_d", [0.1 0.05 0.02], "Cxy", [-1 -1 -1; -0.6 -0.6 -0.6], ...
+%!                 "Cz", [0.9 0.9 0.9; 0.7 0.7 0.7], "e", [60 60 60; 5 5 5]);
+%! S = merl_samples (merl_synth (truth), "max_samples", 30000);
+%! [me, ie] = lafortune_fit (S, 2, "reduce", "exact", "channels", 2);
+%! [mg, ig] = lafortune_fit (S, 2, "reduce", 128, "channels", 2);
+%! assert (ie.reduce, "exact");
+%! assert (ig.reduce, "grid 128");
+%! assert (ig.groups < ie.groups / 2);
+%! assert (ie.rel_rmse(2) < 1e-3);
+%! assert (ig.rel_rmse(2) < 1e-3);
+%! fe = lafortune_eval (me, S.wi, S.wo)(:,2); fg = lafortune_eval (mg, S.wi, S.wo)(:,2);
+%! assert (max (abs (fg - fe)) <= 1e-2 * max (fe));
+%! ## more than 20000 samples: cells by default
+%! [~, ia] = lafortune_fit (S, 1, "channels", 2);
+%! assert (ia.reduce, "grid 512");
+
+%!warning id=lafortune:negativeData lafortune_fit (struct ("wi", repmat ([0 0 1], 5, 1), "wo", repmat ([0 0 1], 5, 1), "rgb", -ones (5, 3)), 1, "channels", 1);
+%!test
+%! ## all-negative data: a warning with an id, and the zero model
+%! S = struct ("wi", [sind(0:10:80)' zeros(9,1) cosd(0:10:80)'], "wo", [-sind(0:10:80)' zeros(9,1) cosd(0:10:80)']);
+%! S.rgb = -repmat ((1:9)', 1, 3);
+%! warning ("off", "lafortune:notConverged", "local");
+%! warning ("off", "lafortune:negativeData", "local");
+%! [m, info] = lafortune_fit (S, 1, "channels", 2);
+%! assert (info.rel_rmse(2), 1, 1e-12);
+%! assert (lafortune_eval (m, S.wi, S.wo)(:,2), zeros (9, 1));
+
 %!warning <did not converge> lafortune_fit (__plane (struct ("rho_d", [0.2 0.1 0.05], "Cxy", [-0.9 -1 -1.1], "Cz", [0.8 1 0.9], "e", [5 30 80])), 1, "max_iter", 1, "channels", 1);
 
 %!shared S0
@@ -725,3 +644,9 @@ endfunction
 %!error id=lafortune:badOption lafortune_fit (S0, 1, "init", "random")
 %!error id=lafortune:badOption lafortune_fit (S0, 2, "start", struct ("rho_d", [0 0 0], "Cxy", [1 1 1], "Cz", [1 1 1], "e", [1 1 1]))
 %!error id=lafortune:badModel lafortune_fit (S0, 1, "start", struct ("rho_d", [0 0 0]))
+%!error <S.weight must be N x 1> lafortune_fit (setfield (S0, "weight", ones (4, 1)), 1)
+%!error <S.weight must be N x 1> lafortune_fit (setfield (S0, "weight", [1 1 -1 1 1]'), 1)
+%!error <S.weight must be N x 1> lafortune_fit (setfield (S0, "weight", zeros (5, 1)), 1)
+%!error <S.weight must be N x 1> lafortune_fit (setfield (S0, "weight", [1 1 NaN 1 1]'), 1)
+%!error <REDUCE must be> lafortune_fit (S0, 1, "reduce", "coarse")
+%!error <REDUCE must be> lafortune_fit (S0, 1, "reduce", 0)

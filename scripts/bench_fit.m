@@ -4,10 +4,27 @@
 ## bench_fit: in-plane 1/2/3-lobe RGB fits of green-metallic-paint, the
 ## paper's setup (leasqr defaults: finite-difference Jacobian, stol 1e-4,
 ## 20 iterations, no bounds, plain start) against this toolbox's fit
-## (analytic Jacobian, bounds, grown deterministic start), and merl_eval
-## throughput.  Prints tables; not a test.  Run: make bench
+## (analytic Jacobian, bounds, grown deterministic start); the same table,
+## model and start fitted by scipy.optimize.least_squares (method "lm",
+## MINPACK, analytic Jacobian; skipped when Debian's python3-scipy is absent);
+## full-hemisphere fits on every valid bin, reduced to (a, c) cells, against
+## the fit on all distinct (a, c) pairs; and merl_eval throughput.  Prints
+## tables; not a test.  Run: make bench
 
 1;
+
+## the python3 that has scipy (Debian's is /usr/bin/python3), or ""
+function py = scipy_python ()
+  py = "";
+  for c = {"python3", "/usr/bin/python3"}
+    [st, ~] = system (sprintf ("%s -c \"import scipy.optimize\" 2>/dev/null", c{1}));
+    if (st == 0)
+      py = c{1};
+      return;
+    endif
+  endfor
+endfunction
+
 here = fileparts (mfilename ("fullpath"));
 addpath (fullfile (here, "..", "inst"));
 warning ("off", "Octave:shadowed-function");
@@ -28,16 +45,78 @@ printf ("Fit: time (s, all 3 channels) and rmse (mean over RGB); (b) grows 1->k,
 printf ("%-6s | %-10s %-10s | %-10s %-10s | %-7s %-9s\n", "lobes", "(a) time", "(a) rmse", ...
         "(b) time", "(b) rmse", "speedup", "rmse b/a");
 reps = 3;
+tb = rb = nan (1, 3);
 for k = 1:3
-  ta = tb = Inf;
+  ta = Inf; tb(k) = Inf;
   for r = 1:reps
     tic; [ma, ia] = lafortune_fit (S, k, "init", "plain", "jacobian", "numeric", ...
                                    "tol", 1e-4, "max_iter", 20, "bounds", false); ta = min (ta, toc);
-    tic; [mb, ib] = lafortune_fit (S, k); tb = min (tb, toc);
+    tic; [mb, ib] = lafortune_fit (S, k); tb(k) = min (tb(k), toc);
   endfor
+  rb(k) = mean (ib.rmse);
   printf ("%-6d | %-10.3f %-10.4g | %-10.3f %-10.4g | %-7.1f %-9.3f\n", k, ta, mean (ia.rmse), ...
-          tb, mean (ib.rmse), ta / tb, mean (ib.rmse) / mean (ia.rmse));
+          tb(k), rb(k), ta / tb(k), rb(k) / mean (ia.rmse));
 endfor
+
+## the peer: scipy's MINPACK on the same table, model and start
+printf ("\nPeer: scipy.optimize.least_squares (method \"lm\", MINPACK, analytic Jacobian), same table and model,\n");
+printf ("from lafortune_fit's \"plain\" start; (c) lafortune_fit from that start; (b) lafortune_fit as above (grown start).\n");
+printf ("Times: best of %d, all 3 channels, wall-clock s (processor s); ratio = lafortune_fit / scipy; rmse: mean over RGB.\n", reps);
+py = scipy_python ();
+if (isempty (py))
+  printf ("skipped: scipy is absent (install Debian's python3-scipy to compare; it is no dependency of lafortune)\n");
+else
+  tab = [tempname() ".txt"];
+  x = [S.wi(:,1) .* S.wo(:,1) + S.wi(:,2) .* S.wo(:,2), S.wi(:,3) .* S.wo(:,3)];
+  fid = fopen (tab, "w");
+  fprintf (fid, "%.17g %.17g %.17g %.17g %.17g\n", [x S.rgb].');
+  fclose (fid);
+  [st, out] = system (sprintf ("%s %s %s 3 %d", py, fullfile (here, "bench_fit_scipy.py"), tab, reps));
+  unlink (tab);
+  P = sscanf (out, "%f", [7 Inf]).';
+  if (st != 0 || rows (P) != 3)
+    printf ("skipped: the scipy peer failed: %s\n", out);
+  else
+    printf ("%-5s | %-15s %-9s | %-15s %-9s | %-15s %-9s | %-11s %-9s | %-11s %-9s\n", "lobes", "scipy s (cpu)", "rmse", ...
+            "(c) s (cpu)", "rmse", "(b) s (cpu)", "rmse", "(c)/scipy", "rmse c/s", "(b)/scipy", "rmse b/s");
+    for k = 1:3
+      tc = tb = cc = cb = Inf;
+      for r = 1:reps
+        t0 = tic (); c0 = cputime (); [~, ic] = lafortune_fit (S, k, "init", "plain");
+        cc = min (cc, cputime () - c0); tc = min (tc, toc (t0));
+        t0 = tic (); c0 = cputime (); [~, ib] = lafortune_fit (S, k);
+        cb = min (cb, cputime () - c0); tb = min (tb, toc (t0));
+      endfor
+      rs = mean (P(k,3:5));
+      printf ("%-5d | %-6.3f (%.3f) %-9.5g | %-6.3f (%.3f) %-9.5g | %-6.3f (%.3f) %-9.5g | %.2f (%.2f) %-9.6f | %.2f (%.2f) %-9.6f\n", ...
+              k, P(k,2), P(k,7), rs, tc, cc, mean (ic.rmse), tb, cb, mean (ib.rmse), ...
+              tc / P(k,2), cc / P(k,7), mean (ic.rmse) / rs, tb / P(k,2), cb / P(k,7), mean (ib.rmse) / rs);
+    endfor
+  endif
+endif
+
+## every valid bin of the hemisphere: the fit on (a, c) cells against the
+## fit on all distinct (a, c) pairs (exactly the fit on all samples)
+H = merl_samples (brdf);
+printf ("\nHemisphere, every valid bin (%d samples), 3 lobes RGB: default reduction against the exact one\n", rows (H.wi));
+printf ("%-14s | %-8s | %-8s | %-10s | %-12s\n", "reduction", "groups", "time s", "rmse", "rel. to exact");
+tic; [me, ie] = lafortune_fit (H, 3, "reduce", "exact"); te = toc;
+fe = lafortune_eval (me, H.wi, H.wo);
+for red = {"auto", 256, 128}
+  tic; [mg, ig] = lafortune_fit (H, 3, "reduce", red{1}); tg = toc;
+  fg = lafortune_eval (mg, H.wi, H.wo);
+  printf ("%-14s | %-8d | %-8.2f | %-10.5g | %+.2e rmse, %.2e max |f - f_exact| / max f_exact; %.3fx time\n", ...
+          ig.reduce, ig.groups, tg, mean (ig.rmse), mean (ig.rmse) / mean (ie.rmse) - 1, ...
+          max (abs (fg(:) - fe(:))) / max (fe(:)), tg / te);
+endfor
+printf ("%-14s | %-8d | %-8.2f | %-10.5g |\n", ie.reduce, ie.groups, te, mean (ie.rmse));
+proxy2 = bench_data ("red-plastic");
+if (! isempty (proxy2))
+  H2 = merl_samples (merl_read (proxy2));
+  tic; [~, i2] = lafortune_fit (H2, 3); t2 = toc;
+  printf ("red-plastic, every valid bin (%d samples), 3 lobes RGB, default (%s, %d groups): %.2f s, rmse %.5g\n", ...
+          rows (H2.wi), i2.reduce, i2.groups, t2, mean (i2.rmse));
+endif
 
 ## stiff synthetic ground truth: where the plain start fails
 printf ("\nStiff synthetic ground truth (noise free, in-plane at 0.5 deg): relative rmse, green channel\n");
@@ -78,3 +157,4 @@ endfor
 printf ("%-10s | %-10s | %-12s\n", "method", "time (s)", "lookups/s");
 printf ("%-10s | %-10.3f | %-12.3g (target >= 5e6)\n", "nearest", t, n / t);
 printf ("%-10s | %-10.3f | %-12.3g\n", "linear", tl, n / tl);
+

@@ -51,3 +51,27 @@
 %!   assert (max (f) <= 10 * max (S.rgb));
 %!   assert (max (info.rel_rmse) < 0.5);
 %! endif
+
+%!test
+%! ## every valid bin of the hemisphere (3 lobes, RGB), reduced to (a, c)
+%! ## cells, with per-sample weights: finite, bounded, and the same fit as on
+%! ## the exact groups of a subsample to a small, measured difference
+%! p = __proxy ("red-plastic");
+%! if (! isempty (p))
+%!   warning ("off", "lafortune:notConverged", "local");
+%!   b = merl_read (p);
+%!   H = merl_samples (b);
+%!   H.weight = sind (H.theta_i) .* sind (H.theta_o) + 0.1;   # our own weights
+%!   [m, info] = lafortune_fit (H, 3);
+%!   assert (info.reduce, "grid 512");
+%!   assert (info.groups < rows (H.wi) / 10);
+%!   assert (all (isfinite ([m.rho_d m.Cxy(:)' m.Cz(:)' m.e(:)'])));
+%!   assert (max (info.rel_rmse) < 0.5);
+%!   assert (all (all (diff (info.history) <= 1e-6 * info.history(1,:))));
+%!   Hs = merl_samples (b, "max_samples", 20000);
+%!   Hs.weight = sind (Hs.theta_i) .* sind (Hs.theta_o) + 0.1;
+%!   [me, ie] = lafortune_fit (Hs, 2, "reduce", "exact");
+%!   [mg, ig] = lafortune_fit (Hs, 2, "reduce", 256);
+%!   assert (ig.groups < ie.groups);
+%!   assert (abs (ig.rmse ./ ie.rmse - 1) < 1e-3);
+%! endif

@@ -1,0 +1,98 @@
+## Copyright (C) 2026 The lafortune developers
+## SPDX-License-Identifier: GPL-3.0-or-later
+
+## -*- texinfo -*-
+## @deftypefn {} {@var{ch} =} fit_channel (@var{D}, @var{R}, @var{nlobes}, @var{opt}, @var{G}, @var{p0})
+## Fit one channel (private): @var{D} the data, @var{R} a coarser grouping of
+## the same data for screening starts (both from fit_data, in the same
+## scaled units), @var{G} the acceptance set (fit_guard).  With a start
+## @var{p0}, one Levenberg-Marquardt run from it; else lobes are added one
+## at a time: starts (fit_starts), runs (fit_lm), acceptance (fit_guard and
+## a lower objective; a zero lobe keeps the previous error, so more lobes
+## never fit worse).
+##
+## @var{ch}: @code{p} (scaled units), @code{ps} (cell, per lobe count),
+## @code{ktime} (seconds until each lobe count was done), @code{iter},
+## @code{full_iter}, @code{cvg}, @code{rejected}, and @code{trace}: rows
+## [seconds, objective, rmse] of the evaluations on @var{D} of accepted runs.
+## @end deftypefn
+function ch = fit_channel (D, R, nlobes, opt, G, p0)
+  t0 = tic ();
+  ch = struct ("p", [], "ps", {cell(1, nlobes)}, "ktime", nan (1, nlobes), "iter", 0, "full_iter", 0, "cvg", true,
+               "rejected", 0, "trace", zeros (0, 3));
+  if (nargin > 5)
+    [ch.p, ch.iter, ch.cvg, ch.trace] = fit_lm (D, p0, opt, t0);
+    ch.full_iter = ch.iter;
+    ch.ps{nlobes} = ch.p;
+    return;
+  endif
+  ## 0 lobes: rho_d by weighted least squares
+  p = max (pi * sum (D.wl .^ 2 .* D.yl) / max (sum (D.wl .^ 2), realmin), 0);
+  [obj, err] = fit_objective (D, lafortune_core (p, D.x(:,1), D.x(:,2)));
+  ch.trace = [toc(t0), obj, err];
+  for k = 1:nlobes
+    run = add_lobe (D, R, p, obj, opt, G, t0);
+    p = run.p;
+    obj = run.obj;
+    ch.trace = [ch.trace; run.trace];
+    ch.iter += run.iter;
+    ch.full_iter += run.full_iter;
+    ch.rejected += run.rejected;
+    ch.cvg = run.cvg;
+    ch.ps{k} = p;
+    ch.ktime(k) = toc (t0);
+  endfor
+  ch.p = p;
+endfunction
+
+## One more lobe on top of P (objective OBJ).  When TRIES > 1, the best
+## start of each of the first TRIES direction families gets up to SCREEN_ITER
+## iterations on R and they are ranked by the result; the others follow in
+## the order of fit_starts.  From the first start, a run to convergence on R
+## (when R is much smaller than D) and last on D.  A result that fails the
+## guard is rejected and the next start tried; a result that is not better
+## keeps a zero lobe.
+function run = add_lobe (D, R, p, obj, opt, G, t0)
+  run = struct ("p", [p; 0; 0; 1], "obj", obj, "trace", zeros (0, 3), "iter", 0,
+                "full_iter", 0, "rejected", 0, "cvg", true);
+  starts = fit_starts (R, p);
+  if (isempty (starts) || ! (obj > 0))
+    return;
+  endif
+  ## a run on R first pays only when R is much smaller than D
+  coarse = 4 * rows (R.x) < rows (D.x);
+  ntry = min (opt.tries, columns (starts));
+  done = false (1, columns (starts));
+  if (ntry > 1)
+    screen = opt;
+    screen.max_iter = min (opt.screen_iter, opt.max_iter);
+    sobj = zeros (1, ntry);
+    for i = 1:ntry
+      [starts(:,i), it, done(i)] = fit_lm (R, starts(:,i), screen);
+      run.iter += it;
+      sobj(i) = fit_objective (R, lafortune_core (starts(:,i), R.x(:,1), R.x(:,2)));
+    endfor
+    [~, so] = sort (sobj);
+    starts(:,1:ntry) = starts(:,so);
+    done(1:ntry) = done(so);
+  endif
+  for i = 1:columns (starts)
+    ps = starts(:,i);
+    if (coarse && ! done(i))
+      [ps, it] = fit_lm (R, ps, opt);
+      run.iter += it;
+    endif
+    [pj, it, cv, T] = fit_lm (D, ps, opt, t0);
+    run.iter += it;
+    run.full_iter += it;
+    if (! fit_guard (pj, G, D.ymax))
+      run.rejected += 1;
+      continue;
+    endif
+    oj = fit_objective (D, lafortune_core (pj, D.x(:,1), D.x(:,2)));
+    if (oj < run.obj)
+      run.p = pj; run.obj = oj; run.cvg = cv; run.trace = T;
+    endif
+    break;
+  endfor
+endfunction

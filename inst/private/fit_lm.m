@@ -1,0 +1,85 @@
+## Copyright (C) 2026 The lafortune developers
+## SPDX-License-Identifier: GPL-3.0-or-later
+
+## -*- texinfo -*-
+## @deftypefn {} {[@var{p}, @var{iter}, @var{cvg}, @var{T}] =} fit_lm (@var{D}, @var{p0}, @var{opt}, @var{t0})
+## One Levenberg-Marquardt run of leasqr on one channel's data @var{D}
+## (from fit_data; private), from parameters @var{p0}, with the analytic
+## Jacobian (or leasqr's dfdp), bounds rho_d >= 0 and 0 <= e <= 1e7 when
+## @code{opt.bounds}, @code{opt.tol} and @code{opt.max_iter}.
+##
+## With @var{t0} (a @code{tic} value), every evaluation of the model is noted
+## as a row [seconds since @var{t0}, objective, rmse] of @var{T} (see
+## fit_objective); the caller decides whether the run counts.
+## @end deftypefn
+function [p, iter, cvg, T] = fit_lm (D, p0, opt, t0 = [])
+  np = numel (p0);
+  rec = [];
+  if (! isempty (t0))
+    rec = fit_recorder (t0);
+  endif
+  F = @(xx, pp) model_fun (D, pp, rec);
+  lb = -Inf (np, 1); ub = Inf (np, 1);
+  lb(1) = 0;
+  lb(4:3:end) = 0; ub(4:3:end) = 1e7;
+  p0 = min (max (p0, lb), ub);
+  options = struct ();
+  if (opt.bounds)
+    options.bounds = [lb ub];
+  endif
+  dp = 1e-3 * ones (np, 1);
+  if (strcmp (opt.jacobian, "analytic"))
+    dFdp = @(xx, f, pp, dpp, FF, varargin) model_jac (D, pp);
+  else
+    dFdp = "dfdp";
+  endif
+  ## leasqr reads the global 'verbose'; it must be false here.  Leave the
+  ## global space as it was found.
+  had = any (strcmp ("verbose", who ("global")));
+  global verbose;
+  old = verbose;
+  verbose = false;
+  unwind_protect
+    [~, p, cvg, iter] = quiet_leasqr (D.x, D.ty, p0, F, opt.tol, opt.max_iter, D.w, dp, dFdp, options);
+  unwind_protect_cleanup
+    if (had)
+      verbose = old;
+    else
+      clear -global verbose;
+    endif
+  end_unwind_protect
+  p = real (p(:));
+  if (! all (isfinite (p)))
+    p = p0;
+    cvg = false;
+  endif
+  if (opt.bounds)
+    p = min (max (p, lb), ub);
+  endif
+  T = zeros (0, 3);
+  if (! isempty (rec))
+    T = rec.T;
+  endif
+endfunction
+
+function varargout = quiet_leasqr (varargin)
+  ## leasqr prints " CONVERGENCE NOT ACHIEVED! " itself; lafortune_fit warns instead
+  args = varargin;
+  [out, varargout{1:4}] = evalc ("leasqr (args{:})");
+endfunction
+
+function f = model_fun (D, p, rec)
+  f = lafortune_core (p, D.x(:,1), D.x(:,2));
+  if (! isempty (rec))
+    [o, e] = fit_objective (D, f);
+    rec.add (o, e);
+  endif
+  f = fit_tf (D, f);
+endfunction
+
+function J = model_jac (D, p)
+  [f, J] = lafortune_core (p, D.x(:,1), D.x(:,2));
+  if (D.islog)
+    J ./= (max (f, 0) + D.dl);
+  endif
+endfunction
