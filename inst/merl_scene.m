@@ -99,13 +99,7 @@ function [S, img] = merl_scene (material, scene, varargin)
     for k0 = 0:chunk:total-1
       m = min (chunk, total - k0);
       k = k0 + (0:m-1).';
-      if (jitter)
-        j = rand (m, 2);
-      else
-        j = 0.5 * ones (m, 2);
-      endif
-      [x, y] = pixel_samples (H, W, k, spp, j);
-      [O, D] = camera_rays (cam, x, y);
+      [O, D] = sample_rays (scene, cam, k, jitter);
       T = scene_trace (objs, scene, O, D, epsilon);
       miss += accumarray (mod (k, npix) + 1, T.miss, [npix 1]);
       il = find (T.lit);
@@ -145,16 +139,8 @@ function [S, img] = merl_scene (material, scene, varargin)
   img = (acc + miss .* double (scene.background(:).')) / spp;
   img = reshape (img, H, W, 3);
 
-  nm = "";
-  if (isfield (material, "name") && ischar (material.name))
-    nm = material.name;
-  endif
-  sn = "";
-  if (isfield (scene, "name") && ischar (scene.name))
-    sn = scene.name;
-  endif
   S = struct ("kind", "scene", "wi", wi, "wo", wo, "rgb", rgb, "weight", cnt / total,
-              "irradiance", irr, "peak", max (img(:)), "name", nm, "scene", sn,
+              "irradiance", irr, "peak", max (img(:)), "name", name_of (material), "scene", name_of (scene),
               "bin", opt.bin, "samples", total);
 endfunction
 

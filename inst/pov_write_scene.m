@@ -608,14 +608,8 @@ function s = table_sdl (id, name, T, ti, to, io, Ki, L, inner)
 endfunction
 
 function s = header_sdl (scene, material, opt, tabs, rng_i, rng_o, peak)
-  nm = "";
-  if (isfield (material, "name") && ischar (material.name))
-    nm = material.name;
-  endif
-  sname = "";
-  if (isfield (scene, "name") && ischar (scene.name))
-    sname = scene.name;
-  endif
+  nm = name_of (material);
+  sname = name_of (scene);
   s = sprintf (["// POV-Ray 3.7 scene written by pov_write_scene (lafortune package)\n" ...
                 "// scene '%s', material '%s', %d x %d pixels\n" ...
                 "// render: povray +I<this> +O<out>.exr +FE +W%d +H%d -A File_Gamma=1.0\n" ...

@@ -185,13 +185,7 @@ function [img, info] = rt_render (scene, material, varargin)
       t0 = tic ();
       k = k0 + (0:m-1).';
       pix = mod (k, npix) + 1;
-      if (opt.jitter)
-        j = rand (m, 2);
-      else
-        j = 0.5 * ones (m, 2);
-      endif
-      [x, y] = pixel_samples (H, W, k, spp, j);
-      [O, D] = camera_rays (cam, x, y);
+      [O, D] = sample_rays (scene, cam, k, opt.jitter);
       t_int += toc (t0);
       [T, tt] = scene_trace (objs, scene, O, D, epsilon);
       t_int += tt(1);

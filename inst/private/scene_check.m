@@ -79,7 +79,7 @@ function check_camera (c, fname)
     otherwise
       error ("lafortune:badScene",
              "%s: unknown camera type '%s' (expected orthographic or perspective)", fname,
-             disp_str (c.type));
+             arg_str (c.type));
   endswitch
 endfunction
 
@@ -106,7 +106,7 @@ function check_light (lt, fname)
     otherwise
       error ("lafortune:badScene",
              "%s: unknown light type '%s' (expected directional or point)", fname,
-             disp_str (lt.type));
+             arg_str (lt.type));
   endswitch
 endfunction
 
@@ -136,7 +136,7 @@ function check_objects (ob, fname)
       otherwise
         error ("lafortune:badScene",
                "%s: unknown object type '%s' (expected sphere, plane or mesh)", fname,
-               disp_str (o.type));
+               arg_str (o.type));
     endswitch
     if (! ok)
       error ("lafortune:badScene", "%s: SCENE.objects(%d) is not a valid %s", fname, k, o.type);
@@ -150,12 +150,4 @@ endfunction
 
 function tf = vec3 (v)
   tf = isnumeric (v) && isreal (v) && numel (v) == 3 && all (isfinite (v(:)));
-endfunction
-
-function s = disp_str (v)
-  if (ischar (v))
-    s = v;
-  else
-    s = class (v);
-  endif
 endfunction
