@@ -144,6 +144,10 @@ namespace
     const double fd = static_cast<double> (static_cast<long> (cd));
     const double fp = static_cast<double> (static_cast<long> (cp));
     const double tol = 1e-7;
+    // !(x < big) also sends NaN (from directions that are not unit vectors,
+    // which merl_eval rejects) to index_ref, whose clamps keep it in range
+    if (! (ch < 200 && cd < 200 && cp < 400))
+      return index_ref (wi, wo);
     if (th < 1e-6 || td < 1e-5 || near_whole (ch, fh, tol) || near_whole (cd, fd, tol)
         || near_whole (cp, fp, tol))
       return index_ref (wi, wo);
@@ -224,7 +228,8 @@ Nearest-bin lookup of a MERL table (internal; use @code{merl_eval}).
 
 @var{data} is the 1458000 x 3 double table and @var{ok} the 1458000 x 1
 logical mask of a MERL struct; @var{wi}, @var{wo} are N x 3 double unit
-directions (not checked: @code{merl_eval} checks them).  @var{rgb} (N x 3)
+directions (only their shape is checked here: @code{merl_eval} checks that
+they are unit vectors; other values give some bin or 0, never a crash).  @var{rgb} (N x 3)
 is the bin's value, 0 below the horizon or for a missing sample;
 @var{valid} (N x 1 logical) says which samples have a value; @var{idx}
 (N x 1) is the 1-based bin, 0 below the horizon.
@@ -369,6 +374,16 @@ rgb = __merl_nearest__ (b.data, b.valid, [0 0 1], [0 0.6 0.8])
 %! [rgb, ok] = __merl_nearest__ (b2.data, b2.valid, zeros (0, 3), zeros (0, 3));
 %! assert (size (rgb), [0 3]);
 %! assert (size (ok), [0 1]);
+
+%!test
+%! ## directions that are not unit vectors (merl_eval rejects them) give a
+%! ## bin in range or 0, never a read outside the table
+%! w = [NaN 0 1; 0 0 Inf; 0 0 0; 1e300 1e300 1; -Inf 0 1; 0 0 1e-300; 3 4 5];
+%! [i, j] = ndgrid (1:rows (w));
+%! [rgb, ok, idx] = __merl_nearest__ (b.data, b.valid, w(i(:),:), w(j(:),:));
+%! assert (all (idx >= 0 & idx <= 1458000));
+%! assert (rgb(:,1), idx);
+%! assert (ok, idx > 0);
 
 %!error <Invalid call> __merl_nearest__ (1, 2, 3)
 %!error id=lafortune:badInput __merl_nearest__ (zeros (10, 3), true (1458000, 1), [0 0 1], [0 0 1])
