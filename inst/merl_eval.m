@@ -18,7 +18,8 @@
 ## floor (theta_d/(pi/2) * 90), phi_d folded into [0, pi) by reciprocity and
 ## index floor (phi_d/pi * 180), each clamped.  It runs in the compiled
 ## @code{__merl_nearest__} (@file{src/}, built by @code{pkg install}): a fast
-## path places most samples; those within 1e-7 of a bin edge, with the half
+## path (half and difference vectors compared with tables of the bin edges)
+## places most samples; those within 1e-6 of a bin edge, with the half
 ## vector along the normal or with wi close to wo (where phi_h or phi_d is
 ## the atan2 of rounding residues) are placed with the reader's own sequence
 ## of operations (its Rodrigues rotations, term by term), so that even the

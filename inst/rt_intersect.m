@@ -31,7 +31,7 @@
 ## @code{pkg install}): one ray at a time, depth first with a small stack,
 ## near child first, boxes entered beyond the ray's best hit so far skipped,
 ## the triangles of the leaves tested (Moeller-Trumbore).  Meshes of more
-## than 2048 triangles are traced by two threads.
+## than 2048 triangles are traced by one thread per core (at most 16).
 ## @item "octave"
 ## the same tests in Octave, vectorised: a stack of (ray, node) pairs
 ## processed in waves; each wave pops the most recently pushed pairs (so each
@@ -140,7 +140,10 @@ function hit = rt_intersect (objects, O, D, tmin, tmax, anyhit, engine)
           bvh = rt_bvh (ob.vertices, ob.faces);
         endif
         if (compiled && isfield (bvh, "boxes"))
-          nthr = 1 + (rows (ob.faces) > 2048 && rows (o) >= 2048);
+          nthr = 1;
+          if (rows (ob.faces) > 2048 && rows (o) >= 2048)
+            nthr = min (nproc (), 16);      # one thread per core
+          endif
           [t, pr, u, v] = __rt_traverse__ (bvh.boxes, bvh.tris, bvh.tri, bvh.nleaf,
                                            o, d, t0, tb, anyhit, nthr);
         else

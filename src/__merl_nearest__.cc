@@ -2,17 +2,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // __merl_nearest__: the nearest-bin lookup of merl_eval, compiled.  The bin
-// of each direction pair is the MERL reference reader's bin: a fast path
-// (the half vector's angles with two square roots and no trigonometric
-// rotation, as inst/private/merl_angles.m) places the samples that lie
-// clearly inside a bin; a sample within 1e-7 (in index units) of a bin edge,
-// with the half vector along the normal (theta_h < 1e-6: phi_h is the atan2
-// of rounding residues) or wi close to wo (theta_d < 1e-5: so is phi_d) is
-// placed with the reader's own
-// sequence of operations (its two Rodrigues rotations, term by term, as
-// inst/private/merl_index_ref.m), written here from the published formulas.
-// Built with -ffp-contract=off (src/Makefile) so that no multiply-add is
-// fused: every operation rounds as Octave's element-wise operations do.
+// of each direction pair is the MERL reference reader's bin.  A fast path
+// computes the half vector and the difference vector with square roots (no
+// trigonometric rotation) and finds the bins by comparing cos theta_h,
+// cos theta_d and the phi_d direction with tables of the bin edges (no acos,
+// no atan2).  A sample within 1e-6 (in index units) of a bin edge, with the
+// half vector along the normal (theta_h < 1e-6: phi_h is the atan2 of
+// rounding residues) or wi close to wo (theta_d < 1e-5: so is phi_d) is
+// placed with the reader's own sequence of operations (its two Rodrigues
+// rotations, term by term, as inst/private/merl_index_ref.m), written here
+// from the published formulas.  Built with -ffp-contract=off (src/Makefile)
+// so that no multiply-add is fused: every operation of that path rounds as
+// Octave's element-wise operations do.
 
 #include <octave/oct.h>
 
@@ -88,24 +89,88 @@ namespace
     return ip + id * 180 + ih * 180 * 90;
   }
 
-  // Is x (>= 0) within tol of a whole number?  Its fraction x - trunc (x)
-  // is exact, and so is 1 - fraction when the fraction is >= 1/2: the same
-  // test as |x - round (x)| < tol.
-  inline bool
-  near_whole (double x, double f, double tol)
+  // The bin edges as thresholds, so that the fast path needs no acos or
+  // atan2.  theta_h: edge k (1..89) at th_k = (k/90)^2 pi/2, where
+  // cos (theta_h) = CH[k]; theta_d: edge k at k degrees, cos = CD[k];
+  // phi_d: edge k (0..180) at k degrees, direction (CP[k], SP[k]).  Each
+  // edge has a margin: MARGIN index units, converted to the compared
+  // quantity (TH[k], TD[k] in cosine, MP in radians).  A sample within the
+  // margin of an edge goes to index_ref.  Guess tables give the bin at the
+  // low end of a cell of a cheap monotone function of the quantity; a step
+  // or two along the thresholds then finds the bin.
+  const double MARGIN = 1e-6;
+  const int NG = 1024;
+
+  struct edges
   {
-    const double fr = x - f;
-    return fr < tol || 1 - fr < tol;
+    double CH[91], TH[91], CD[91], TD[91], CP[181], SP[181], MP;
+    double h_small, d_small;
+    unsigned char gh[NG + 1], gd[NG + 1], gp[NG + 1];
+
+    edges ()
+    {
+      const double deg = PI / 180;
+      for (int k = 0; k <= 90; k++)
+        {
+          const double th = (k / 90.0) * (k / 90.0) * (PI / 2);
+          CH[k] = std::cos (th);
+          // d ch / d th = 8100 / (pi/2) / (2 ch) at ch = k
+          TH[k] = k == 0 ? 0 : std::sin (th) * MARGIN * (2.0 * k * (PI / 2) / 8100);
+          CD[k] = std::cos (k * deg);
+          TD[k] = std::sin (k * deg) * MARGIN * deg;
+        }
+      for (int k = 0; k <= 180; k++)
+        {
+          CP[k] = std::cos (k * deg);
+          SP[k] = std::sin (k * deg);
+        }
+      MP = std::sin (MARGIN * deg);
+      h_small = std::cos (1e-6);
+      d_small = std::cos (1e-5);
+      for (int c = 0; c <= NG; c++)
+        {
+          const double q = double (c) / NG;
+          // theta_h: cell of sqrt (sqrt (1 - cos th))
+          const double th = std::acos (1 - q * q * q * q);
+          gh[c] = std::min (89, int (std::sqrt (th / (PI / 2)) * 90));
+          // theta_d: cell of sqrt (1 - cos td)
+          const double td = std::acos (std::max (1 - q * q, -1.0));
+          gd[c] = std::min (89, int (td / deg));
+          // phi_d: cell of the pseudo-angle p = 1 - x / (|x| + y), in [0, 2]
+          const double x = 1 - 2 * q;
+          const double ps = std::atan2 (1 - std::abs (x), x);
+          gp[c] = std::min (179, int (ps / deg));
+        }
+    }
+  };
+
+  const edges&
+  the_edges ()
+  {
+    static const edges e;     // built once (thread-safe in C++11)
+    return e;
+  }
+
+  inline int
+  cell (double v)
+  {
+    // v in [0, 1]; NaN and out-of-range values are clamped
+    if (! (v > 0))
+      return 0;
+    if (v >= 1)
+      return NG;
+    return int (v * NG);
   }
 
   // 0-based bin: the fast path, or index_ref where rounding decides.  The
-  // fast path's angles are accurate to a few units in the last place, far
-  // inside the 1e-7 (index units) margin to the nearest bin edge that it
-  // requires; theta_h < 1e-6 and theta_d < 1e-5 go to the reader's
-  // arithmetic too, because there phi_h or phi_d is the atan2 of rounding
-  // residues, which only the reader's own operations reproduce.
+  // fast path's half and difference vectors are accurate to a few units in
+  // the last place; it decides a bin only when the sample is more than
+  // MARGIN (1e-6 index units) from every bin edge, far outside that error.
+  // theta_h < 1e-6 and theta_d < 1e-5 go to the reader's arithmetic too,
+  // because there phi_h or phi_d is the atan2 of rounding residues, which
+  // only the reader's own operations reproduce.
   inline octave_idx_type
-  index_fast (const double *wi, const double *wo)
+  index_fast (const double *wi, const double *wo, const edges& e)
   {
     const double hx = wi[0] + wo[0];
     const double hy = wi[1] + wo[1];
@@ -113,48 +178,59 @@ namespace
     const double rxy = hx * hx + hy * hy;
     const double inv = 1 / std::sqrt (rxy + hz * hz);
     hz *= inv;
-    if (hz > 1)
-      hz = 1;
-    const double th = std::acos (hz);
+    if (! (hz <= e.h_small && rxy > 0))      // also NaN
+      return index_ref (wi, wo);
     const double sth = std::sqrt (rxy) * inv;
-    double cph = 1, sph = 0;
-    if (rxy != 0)
-      {
-        const double r = 1 / std::sqrt (rxy);
-        cph = hx * r;
-        sph = hy * r;
-      }
+    const double r = 1 / std::sqrt (rxy);
+    const double cph = hx * r;
+    const double sph = hy * r;
     const double x1 = wi[0] * cph + wi[1] * sph;
     const double y1 = wi[1] * cph - wi[0] * sph;
     const double x2 = x1 * hz - wi[2] * sth;
-    double z2 = x1 * sth + wi[2] * hz;
-    if (z2 > 1)
-      z2 = 1;
-    if (z2 < -1)
-      z2 = -1;
-    const double td = std::acos (z2);
-    double pd = std::atan2 (y1, x2);
-    if (pd < 0)
-      pd += PI;
-    // all three are >= 0: truncation is floor
-    const double ch = std::sqrt ((th / (PI / 2)) * 90 * 90);
-    const double cd = td / (PI * 0.5) * 90;
-    const double cp = pd / PI * 360 / 2;
-    const double fh = static_cast<double> (static_cast<long> (ch));
-    const double fd = static_cast<double> (static_cast<long> (cd));
-    const double fp = static_cast<double> (static_cast<long> (cp));
-    const double tol = 1e-7;
-    // !(x < big) also sends NaN (from directions that are not unit vectors,
-    // which merl_eval rejects) to index_ref, whose clamps keep it in range
-    if (! (ch < 200 && cd < 200 && cp < 400))
+    const double z2 = x1 * sth + wi[2] * hz;
+    if (! (z2 <= e.d_small))
       return index_ref (wi, wo);
-    if (th < 1e-6 || td < 1e-5 || near_whole (ch, fh, tol) || near_whole (cd, fd, tol)
-        || near_whole (cp, fp, tol))
+    // theta_h: CH[g] >= hz > CH[g+1]
+    int ih = e.gh[cell (std::sqrt (std::sqrt (1 - hz)))];
+    while (ih < 89 && hz <= e.CH[ih + 1])
+      ih++;
+    while (ih > 0 && hz > e.CH[ih])
+      ih--;
+    if ((ih > 0 && e.CH[ih] - hz < e.TH[ih])
+        || (ih < 89 && hz - e.CH[ih + 1] < e.TH[ih + 1]))
       return index_ref (wi, wo);
-    const octave_idx_type ih = fh < 89 ? fh : 89;
-    const octave_idx_type id = fd < 89 ? fd : 89;
-    const octave_idx_type ip = fp < 179 ? fp : 179;
-    return (ih * 90 + id) * 180 + ip;
+    // theta_d: CD[g] >= z2 > CD[g+1]
+    int id = e.gd[cell (std::sqrt (1 - z2))];
+    while (id < 89 && z2 <= e.CD[id + 1])
+      id++;
+    while (id > 0 && z2 > e.CD[id])
+      id--;
+    if ((id > 0 && e.CD[id] - z2 < e.TD[id])
+        || (id < 89 && z2 - e.CD[id + 1] < e.TD[id + 1]))
+      return index_ref (wi, wo);
+    // phi_d = atan2 (y1, x2) folded into [0, pi): the direction (x, y),
+    // y >= 0; near 0 or pi (y small) the fold itself is decided by signs
+    // of rounding residues
+    double x = x2, y = y1;
+    if (y < 0)
+      {
+        x = -x;
+        y = -y;
+      }
+    const double rv = std::sqrt (x * x + y * y);
+    const double tol = rv * e.MP;
+    if (! (y > tol))
+      return index_ref (wi, wo);
+    int ip = e.gp[cell ((1 - x / (std::abs (x) + y)) / 2)];
+    // angle >= k degrees <=> CP[k] y - SP[k] x >= 0
+    while (ip < 179 && e.CP[ip + 1] * y - e.SP[ip + 1] * x >= 0)
+      ip++;
+    while (ip > 0 && e.CP[ip] * y - e.SP[ip] * x < 0)
+      ip--;
+    if ((ip > 0 && e.CP[ip] * y - e.SP[ip] * x < tol)
+        || (ip < 179 && e.SP[ip + 1] * x - e.CP[ip + 1] * y < tol))
+      return index_ref (wi, wo);
+    return (octave_idx_type (ih) * 90 + id) * 180 + ip;
   }
 
   struct lookup_job
@@ -178,6 +254,7 @@ namespace
     const octave_idx_type n = j.n;
     const octave_idx_type B = 1024;
     octave_idx_type bin[B];
+    const edges& e = the_edges ();
     for (octave_idx_type k0 = lo; k0 < hi; k0 += B)
       {
         const octave_idx_type m = std::min (B, hi - k0);
@@ -187,7 +264,7 @@ namespace
             const double a[3] = {j.wi[k], j.wi[k + n], j.wi[k + 2 * n]};
             const double b[3] = {j.wo[k], j.wo[k + n], j.wo[k + 2 * n]};
             if (a[2] > 0 && b[2] > 0)
-              bin[q] = j.ref ? index_ref (a, b) : index_fast (a, b);
+              bin[q] = j.ref ? index_ref (a, b) : index_fast (a, b, e);
             else
               bin[q] = -1;
           }
@@ -234,9 +311,9 @@ is the bin's value, 0 below the horizon or for a missing sample;
 @var{valid} (N x 1 logical) says which samples have a value; @var{idx}
 (N x 1) is the 1-based bin, 0 below the horizon.
 
-@var{method} @qcode{"fast"} (default) computes the half-vector angles with
-square roots and places the samples within 1e-7 of a bin edge with the
-reference reader's arithmetic; @qcode{"ref"} uses the reader's arithmetic
+@var{method} @qcode{"fast"} (default) compares the half and difference
+vectors with tables of the bin edges and places the samples within 1e-6 of
+a bin edge with the reference reader's arithmetic; @qcode{"ref"} uses the reader's arithmetic
 (two Rodrigues rotations with sines and cosines) for every sample: the same
 bins, slower (the peer of @code{scripts/bench_merl.m}).
 
