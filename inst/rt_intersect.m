@@ -63,13 +63,13 @@ function hit = rt_intersect (objects, O, D, tmin, tmax, anyhit, engine)
   if (! isstruct (objects) || ! isfield (objects, "type"))
     error ("lafortune:badScene", "rt_intersect: OBJECTS must be the struct array scene.objects");
   endif
-  if (! (isnumeric (O) && isnumeric (D) && columns (O) == 3 && columns (D) == 3
-         && rows (O) == rows (D)))
-    error ("lafortune:badInput", "rt_intersect: O and D must be N x 3 arrays of the same size");
+  if (! (isnumeric (O) && isnumeric (D) && isreal (O) && isreal (D) && ndims (O) == 2
+         && ndims (D) == 2 && columns (O) == 3 && columns (D) == 3 && rows (O) == rows (D)))
+    error ("lafortune:badInput", "rt_intersect: O and D must be real N x 3 arrays of the same size");
   endif
   n = rows (O);
-  O = double (O);
-  D = double (D);
+  O = full (double (O));
+  D = full (double (D));
   if (nargin < 4 || isempty (tmin))
     tmin = 0;
   endif
@@ -96,8 +96,12 @@ function hit = rt_intersect (objects, O, D, tmin, tmax, anyhit, engine)
            "rt_intersect: the oct-file __rt_traverse__ is missing (run make -C src, or pkg install the package)");
   endif
   compiled = have_oct && ! strcmp (engine, "octave");
-  tmin = double (tmin(:)) .* ones (n, 1);
-  tbest = double (tmax(:)) .* ones (n, 1);
+  if (! (isnumeric (tmin) && isreal (tmin) && any (numel (tmin) == [1 n])
+         && isnumeric (tmax) && isreal (tmax) && any (numel (tmax) == [1 n])))
+    error ("lafortune:badInput", "rt_intersect: TMIN and TMAX must be real scalars or N x 1");
+  endif
+  tmin = double (full (tmin(:))) .* ones (n, 1);
+  tbest = double (full (tmax(:))) .* ones (n, 1);
   hit.t = Inf (n, 1);
   hit.obj = zeros (n, 1);
   hit.prim = zeros (n, 1);
@@ -368,4 +372,6 @@ endfunction
 %!error id=lafortune:badScene rt_intersect (1, [0 0 0], [0 0 1])
 %!error id=lafortune:badInput rt_intersect (struct ("type", "sphere"), [0 0], [0 0 1])
 %!error id=lafortune:badInput rt_intersect (struct ("type", "sphere"), [0 0 0], [0 0 1], 0, Inf, "yes")
+%!error id=lafortune:badInput rt_intersect (struct ("type", "sphere"), [0 0 1i], [0 0 1])
+%!error id=lafortune:badInput rt_intersect (struct ("type", "sphere"), [0 0 0; 1 1 1], [0 0 1; 0 0 1], [0 0 0])
 %!error id=lafortune:badOption rt_intersect (struct ("type", "sphere"), [0 0 0], [0 0 1], 0, Inf, false, "fast")
