@@ -16,11 +16,19 @@
 ## database's own reference reader does: half/difference angles with phi_h
 ## removed, theta_h index floor (sqrt (theta_h/(pi/2)) * 90), theta_d index
 ## floor (theta_d/(pi/2) * 90), phi_d folded into [0, pi) by reciprocity and
-## index floor (phi_d/pi * 180), each clamped.  A fast vectorised path places
-## most samples; those within 1e-7 of a bin edge, or with the half vector
-## along the normal, are placed with the reader's own sequence of operations
-## (its Rodrigues rotations, term by term), so that even the samples that
-## rounding decides land in the reader's bin for the same direction vectors.  @code{"linear"} interpolates
+## index floor (phi_d/pi * 180), each clamped.  It runs in the compiled
+## @code{__merl_nearest__} (@file{src/}, built by @code{pkg install}): a fast
+## path (half and difference vectors compared with tables of the bin edges)
+## places most samples; those within 1e-6 of a bin edge, with the half
+## vector along the normal or with wi close to wo (where phi_h or phi_d is
+## the atan2 of rounding residues) are placed with the reader's own sequence
+## of operations (its Rodrigues rotations, term by term), so that even the
+## samples that rounding decides land in the reader's bin for the same
+## direction vectors.  @code{"reference"} does every sample with the
+## reader's arithmetic, in Octave: the same bins, several times slower (the
+## peer of the benchmark; @code{"nearest"} falls back to it, with the
+## warning @code{lafortune:noOctFile} once, when the oct-file has not been
+## built).  @code{"linear"} interpolates
 ## trilinearly in that index space (bin k holds the value at index k; phi_d
 ## wraps around), using only valid neighbours.
 ##
@@ -43,9 +51,25 @@ function [rgb, valid] = merl_eval (brdf, wi, wo, method = "nearest")
   endif
   check_merl (brdf, "merl_eval");
   [wi, wo] = check_dirs (wi, wo, "merl_eval");
-  if (! ischar (method) || ! any (strcmp (method, {"nearest", "linear"})))
+  if (! ischar (method) || ! any (strcmp (method, {"nearest", "reference", "linear"})))
     error ("lafortune:badOption",
-           "merl_eval: METHOD must be \"nearest\" or \"linear\"");
+           "merl_eval: METHOD must be \"nearest\", \"reference\" or \"linear\"");
+  endif
+  if (strcmp (method, "nearest"))
+    if (exist ("__merl_nearest__", "file") == 3)
+      data = brdf.data;
+      if (! isa (data, "double"))
+        data = double (data);
+      endif
+      [rgb, valid] = __merl_nearest__ (data, brdf.valid, wi, wo);
+      return;
+    endif
+    warning ("off", "backtrace", "local");
+    if (! warned_once ())
+      warning ("lafortune:noOctFile",
+               "merl_eval: the oct-file __merl_nearest__ is missing (run make -C src, or pkg install the package); using the slower \"reference\" arithmetic");
+    endif
+    method = "reference";
   endif
   n = rows (wi);
   rgb = zeros (n, 3);
@@ -59,31 +83,8 @@ function [rgb, valid] = merl_eval (brdf, wi, wo, method = "nearest")
     wi = wi(above,:);
     wo = wo(above,:);
   endif
-  if (strcmp (method, "nearest"))
-    ## in cache-sized chunks: the arithmetic is memory bound
-    m = rows (wi);
-    idx = zeros (m, 1);
-    B = 32768;
-    for s = 1:B:m
-      k = s:min (s + B - 1, m);
-      [th, td, pd] = merl_angles (wi(k,:), wo(k,:));
-      ## the reference reader's own order of operations
-      ch = sqrt ((th / (pi / 2)) * 90 * 90);
-      cd = td / (pi * 0.5) * 90;
-      cp = pd / pi * 360 / 2;
-      idx(k) = (min (floor (ch), 89) * 90 + min (floor (cd), 89)) * 180 ...
-               + min (floor (cp), 179) + 1;
-      ## where rounding decides (a direction on a bin edge, or h along the
-      ## normal, where phi_h is the atan2 of rounding residues), take the
-      ## reference reader's own arithmetic, operation for operation
-      tol = 1e-7;
-      near = th < 1e-6 | abs (ch - round (ch)) < tol | abs (cd - round (cd)) < tol ...
-             | abs (cp - round (cp)) < tol;
-      if (any (near))
-        kn = k(near);
-        idx(kn) = merl_index_ref (wi(kn,:), wo(kn,:));
-      endif
-    endfor
+  if (strcmp (method, "reference"))
+    idx = merl_index_ref (wi, wo);
     v = brdf.data(idx,:);
     ok = brdf.valid(idx);
     if (! all (ok))
@@ -126,12 +127,19 @@ function [rgb, valid] = merl_eval (brdf, wi, wo, method = "nearest")
     v(! ok,:) = 0;
   endif
   if (all_above)
-    rgb = v;
+    rgb = double (v);
     valid = ok;
   else
     rgb(above,:) = v;
     valid(above) = ok;
   endif
+endfunction
+
+## True after the first call (the missing oct-file is reported once).
+function w = warned_once ()
+  persistent done = false;
+  w = done;
+  done = true;
 endfunction
 
 %!function b = __synth ()
@@ -173,6 +181,37 @@ endfunction
 %! assert (S.rgb(S.theta_o == -29, 1), 102600);
 
 %!test
+%! ## "nearest" (compiled) gives the bins of the reader's arithmetic
+%! ## ("reference"), bit for bit: random pairs, in-plane pairs at whole and
+%! ## half degrees (bin edges, mirror and retro directions), the same rotated
+%! ## about z, wi = wo, wo within 1e-9 to 1e-3 of wi, h along the normal
+%! b2.data = repmat ((1:1458000)', 1, 3);
+%! b2.valid = true (1458000, 1);
+%! rand ("state", 11);
+%! n = 20000;
+%! u = rand (n, 2); v = rand (n, 2);
+%! wi = [sqrt(1 - u(:,1).^2) .* cos(2*pi*u(:,2)), sqrt(1 - u(:,1).^2) .* sin(2*pi*u(:,2)), u(:,1)];
+%! wo = [sqrt(1 - v(:,1).^2) .* cos(2*pi*v(:,2)), sqrt(1 - v(:,1).^2) .* sin(2*pi*v(:,2)), v(:,1)];
+%! [a1, a2] = ndgrid (-89.5:0.5:89.5);
+%! ti = abs (a1(:)) * pi / 180; fi = pi * (a1(:) < 0);
+%! to = abs (a2(:)) * pi / 180; fo = pi * (a2(:) < 0);
+%! pi_ = [sin(ti).*cos(fi), sin(ti).*sin(fi), cos(ti)];
+%! po = [sin(to).*cos(fo), sin(to).*sin(fo), cos(to)];
+%! Rz = [cos(0.3) -sin(0.3) 0; sin(0.3) cos(0.3) 0; 0 0 1];
+%! w = wi(1:2000,:);
+%! p = randn (2000, 3); p -= sum (p .* w, 2) .* w; p ./= sqrt (sum (p .^ 2, 2));
+%! e = 10 .^ -(3 + mod ((1:2000)', 7));
+%! w2 = w + e .* p; w2 ./= sqrt (sum (w2 .^ 2, 2));
+%! g = [sin(0.2) 0 cos(0.2)];
+%! WI = [wi; pi_; pi_ * Rz'; w; w; g; -g(1) 0 g(3)];
+%! WO = [wo; po; po * Rz'; w; w2; g .* [-1 1 1]; g];
+%! [v1, ok1] = merl_eval (b2, WI, WO);
+%! [v2, ok2] = merl_eval (b2, WI, WO, "reference");
+%! assert (isequal (v1, v2));
+%! assert (isequal (ok1, ok2));
+%! assert (nnz (ok1) > 100000);
+
+%!test
 %! ## smooth function: nearest and linear agree with the function to bin accuracy
 %! b = __synth ();
 %! t = linspace (0.05, 1.3, 50)';
@@ -195,6 +234,11 @@ endfunction
 %! assert (v, [0 0 0]); assert (ok, false);
 %! [v, ok] = merl_eval (b3, [0 0 1], [0 0 1], "linear");
 %! assert (v, [0 0 0]); assert (ok, false);
+%! [v, ok] = merl_eval (b3, [0 0 1; 0 0 -1], [0 0 1; 0 0 1], "reference");
+%! assert (v, zeros (2, 3)); assert (ok, [false; false]);
+%! [v, ok] = merl_eval (b, [0 0 1; 0 0 -1], [0 0 1; 0 0 1], "reference");
+%! assert (v(2,:), [0 0 0]); assert (ok, [true; false]);
+%! assert (v(1,:), merl_eval (b, [0 0 1], [0 0 1]));
 
 %!error <Invalid call> merl_eval (1)
 %!error id=lafortune:badMerl merl_eval (struct ("x", 1), [0 0 1], [0 0 1])

@@ -21,7 +21,10 @@
 ## triangle index per slot, 0 = empty; leaf j, 0-based, owns slots
 ## j*L+1 @dots{} j*L+L), @code{v0}, @code{e1}, @code{e2} (L*nleaf x 3: first
 ## vertex and edges of the slot's triangle, NaN for empty slots), the data
-## @code{rt_intersect} traverses.
+## @code{rt_intersect} traverses; and the same interleaved per node and per
+## slot for its compiled traversal: @code{boxes} (6 x (2^(D+1)-1), column k
+## = [bmin(k,:) bmax(k,:)]), @code{tris} (9 x L*nleaf, column s =
+## [v0(s,:) e1(s,:) e2(s,:)]).
 ##
 ## @example
 ## @group
@@ -121,7 +124,8 @@ function bvh = rt_bvh (V, F, leafsize)
   e1(slot,:) = B(order,:) - A(order,:);
   e2(slot,:) = C(order,:) - A(order,:);
   bvh = struct ("depth", D, "nleaf", nleaf, "slots", L, "bmin", bmin, "bmax", bmax,
-                "tri", tri, "v0", v0, "e1", e1, "e2", e2);
+                "tri", tri, "v0", v0, "e1", e1, "e2", e2,
+                "boxes", [bmin bmax].', "tris", [v0 e1 e2].');
 endfunction
 
 %!test
@@ -146,6 +150,9 @@ endfunction
 %! endfor
 %! assert (b.v0(s,:), V(T(:,1),:));
 %! assert (b.e2(s,:), V(T(:,3),:) - V(T(:,1),:));
+%! ## the interleaved copies
+%! assert (b.boxes, [b.bmin b.bmax].');
+%! assert (b.tris(:,s), [b.v0(s,:) b.e1(s,:) b.e2(s,:)].');
 %! ## the splits localise: a leaf box is hardly larger than its triangles
 %! dl = mean (sqrt (sum ((b.bmax(b.nleaf:end,:) - b.bmin(b.nleaf:end,:)) .^ 2, 2)));
 %! A = V(F(:,1),:); B = V(F(:,2),:); C = V(F(:,3),:);

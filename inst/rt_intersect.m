@@ -5,6 +5,7 @@
 ## @deftypefn  {lafortune} {@var{hit} =} rt_intersect (@var{objects}, @var{O}, @var{D})
 ## @deftypefnx {lafortune} {@var{hit} =} rt_intersect (@var{objects}, @var{O}, @var{D}, @var{tmin}, @var{tmax})
 ## @deftypefnx {lafortune} {@var{hit} =} rt_intersect (@var{objects}, @var{O}, @var{D}, @var{tmin}, @var{tmax}, @var{anyhit})
+## @deftypefnx {lafortune} {@var{hit} =} rt_intersect (@var{objects}, @var{O}, @var{D}, @var{tmin}, @var{tmax}, @var{anyhit}, @var{engine})
 ## Intersect rays with the objects of a scene, vectorised over the rays.
 ##
 ## @var{objects} is the struct array @code{scene.objects} of
@@ -22,11 +23,27 @@
 ## finite exactly for the rays that hit something, but not necessarily the
 ## nearest hit.
 ##
-## Meshes are traversed with a stack of (ray, node) pairs processed in
-## vectorised waves: each wave pops the most recently pushed pairs (so each
+## Meshes are traversed by @var{engine}:
+##
+## @table @code
+## @item "compiled"
+## the oct-file @code{__rt_traverse__} (@file{src/}, built by
+## @code{pkg install}): one ray at a time, depth first with a small stack,
+## near child first, boxes entered beyond the ray's best hit so far skipped,
+## the triangles of the leaves tested (Moeller-Trumbore).  Meshes of more
+## than 2048 triangles are traced by one thread per core (at most 16).
+## @item "octave"
+## the same tests in Octave, vectorised: a stack of (ray, node) pairs
+## processed in waves; each wave pops the most recently pushed pairs (so each
 ## ray goes roughly depth first, near child first), culls pairs whose box
 ## entry lies beyond the ray's best hit so far, tests the triangles of the
-## leaves (Moeller-Trumbore) and pushes the children whose boxes are hit.
+## leaves and pushes the children whose boxes are hit.  Some 10 times slower.
+## @item "auto"
+## (default) "compiled" when the oct-file exists, else "octave".
+## @end table
+##
+## Both give the same nearest hits; where two triangles are hit at exactly the
+## same distance (a ray through a shared edge) either may be reported.
 ##
 ## @example
 ## @group
@@ -39,31 +56,52 @@
 ## @seealso{rt_bvh, rt_render, scene_make}
 ## @end deftypefn
 
-function hit = rt_intersect (objects, O, D, tmin, tmax, anyhit)
-  if (nargin < 3 || nargin > 6)
+function hit = rt_intersect (objects, O, D, tmin, tmax, anyhit, engine)
+  if (nargin < 3 || nargin > 7)
     print_usage ();
   endif
   if (! isstruct (objects) || ! isfield (objects, "type"))
     error ("lafortune:badScene", "rt_intersect: OBJECTS must be the struct array scene.objects");
   endif
-  if (! (isnumeric (O) && isnumeric (D) && columns (O) == 3 && columns (D) == 3
-         && rows (O) == rows (D)))
-    error ("lafortune:badInput", "rt_intersect: O and D must be N x 3 arrays of the same size");
+  if (! (isnumeric (O) && isnumeric (D) && isreal (O) && isreal (D) && ndims (O) == 2
+         && ndims (D) == 2 && columns (O) == 3 && columns (D) == 3 && rows (O) == rows (D)))
+    error ("lafortune:badInput", "rt_intersect: O and D must be real N x 3 arrays of the same size");
   endif
   n = rows (O);
-  O = double (O);
-  D = double (D);
+  O = full (double (O));
+  D = full (double (D));
   if (nargin < 4 || isempty (tmin))
     tmin = 0;
   endif
   if (nargin < 5 || isempty (tmax))
     tmax = Inf;
   endif
-  if (nargin < 6)
+  if (nargin < 6 || isempty (anyhit))
     anyhit = false;
   endif
-  tmin = double (tmin(:)) .* ones (n, 1);
-  tbest = double (tmax(:)) .* ones (n, 1);
+  if (! (isscalar (anyhit) && (islogical (anyhit) || isnumeric (anyhit))))
+    error ("lafortune:badInput", "rt_intersect: ANYHIT must be true or false");
+  endif
+  anyhit = logical (anyhit);
+  if (nargin < 7)
+    engine = "auto";
+  endif
+  if (! ischar (engine) || ! any (strcmp (engine, {"auto", "compiled", "octave"})))
+    error ("lafortune:badOption",
+           "rt_intersect: ENGINE must be \"auto\", \"compiled\" or \"octave\"");
+  endif
+  have_oct = exist ("__rt_traverse__", "file") == 3;
+  if (strcmp (engine, "compiled") && ! have_oct)
+    error ("lafortune:noOctFile",
+           "rt_intersect: the oct-file __rt_traverse__ is missing (run make -C src, or pkg install the package)");
+  endif
+  compiled = have_oct && ! strcmp (engine, "octave");
+  if (! (isnumeric (tmin) && isreal (tmin) && any (numel (tmin) == [1 n])
+         && isnumeric (tmax) && isreal (tmax) && any (numel (tmax) == [1 n])))
+    error ("lafortune:badInput", "rt_intersect: TMIN and TMAX must be real scalars or N x 1");
+  endif
+  tmin = double (full (tmin(:))) .* ones (n, 1);
+  tbest = double (full (tmax(:))) .* ones (n, 1);
   hit.t = Inf (n, 1);
   hit.obj = zeros (n, 1);
   hit.prim = zeros (n, 1);
@@ -105,7 +143,16 @@ function hit = rt_intersect (objects, O, D, tmin, tmax, anyhit)
         else
           bvh = rt_bvh (ob.vertices, ob.faces);
         endif
-        [t, pr, u, v] = mesh_hit (bvh, o, d, t0, tb, anyhit);
+        if (compiled && isfield (bvh, "boxes"))
+          nthr = 1;
+          if (rows (ob.faces) > 2048 && rows (o) >= 2048)
+            nthr = min (nproc (), 16);      # one thread per core
+          endif
+          [t, pr, u, v] = __rt_traverse__ (bvh.boxes, bvh.tris, bvh.tri, bvh.nleaf,
+                                           o, d, t0, tb, anyhit, nthr);
+        else
+          [t, pr, u, v] = mesh_hit (bvh, o, d, t0, tb, anyhit);
+        endif
         ok = t < tb;
         pr = pr(ok); u = u(ok); v = v(ok);
       otherwise
@@ -123,8 +170,8 @@ function hit = rt_intersect (objects, O, D, tmin, tmax, anyhit)
   endfor
 endfunction
 
-## Nearest (or any) hit of rays with a BVH mesh.  T is Inf where nothing is
-## hit before TBEST.
+## Nearest (or any) hit of rays with a BVH mesh, in Octave (engine
+## "octave").  T is Inf where nothing is hit before TBEST.
 function [t, prim, bu, bv] = mesh_hit (b, O, D, tmin, tbest, anyhit)
   n = rows (O);
   tmax = tbest;
@@ -258,7 +305,7 @@ endfunction
 %!endfunction
 
 %!test
-%! ## a small mesh against a brute-force loop over all triangles
+%! ## a small mesh against a brute-force loop over all triangles, both engines
 %! [V, F] = mesh_torus ([14 7]);
 %! V = V * [1 0 0; 0 0.6 -0.8; 0 0.8 0.6];
 %! rand ("state", 3); randn ("state", 3);
@@ -267,31 +314,42 @@ endfunction
 %! O(1:100,:) = 0.3 * randn (100, 3);     # some rays start inside the hole
 %! D = [0.3 * randn(n, 2), -ones(n, 1)];
 %! D(1:100,:) = randn (100, 3);
+%! D(101:110,:) = repmat ([0 0 -1], 10, 1);  # axis-parallel rays
 %! D ./= sqrt (sum (D .^ 2, 2));
 %! obj = struct ("type", "mesh", "center", [], "radius", [], "point", [], ...
 %!               "normal", [], "vertices", V, "faces", F, "normals", []);
-%! hit = rt_intersect (obj, O, D);
 %! [t, tri] = brute (V, F, O, D);
 %! assert (nnz (isfinite (t)) > 50);
-%! assert (isfinite (hit.t), isfinite (t));
-%! assert (hit.t, t, 1e-9);
-%! assert (hit.prim, tri);
-%! assert (hit.obj, double (isfinite (t)));
-%! ## barycentrics give the hit point
 %! h = find (isfinite (t));
-%! P = (1 - hit.u(h) - hit.v(h)) .* V(F(tri(h),1),:) + hit.u(h) .* V(F(tri(h),2),:) ...
-%!     + hit.v(h) .* V(F(tri(h),3),:);
-%! assert (P, O(h,:) + t(h) .* D(h,:), 1e-9);
-%! ## leaf size 1 (deep tree), tmax and any-hit
-%! obj.bvh = rt_bvh (V, F, 1);
 %! ts = sort (t(isfinite (t)));
 %! tm = (ts(30) + ts(31)) / 2;
-%! hit1 = rt_intersect (obj, O, D, 0, tm);
-%! e = t; e(t >= tm) = Inf;
-%! assert (hit1.t, e, 1e-9);
-%! hita = rt_intersect (obj, O, D, 0, Inf, true);
-%! assert (isfinite (hita.t), isfinite (t));
-%! assert (all (hita.t(h) >= t(h) - 1e-9));
+%! hits = {};
+%! for engine = {"octave", "compiled"}
+%!   obj.bvh = [];
+%!   hit = rt_intersect (obj, O, D, 0, Inf, false, engine{1});
+%!   assert (isfinite (hit.t), isfinite (t));
+%!   assert (hit.t, t, 1e-9);
+%!   assert (hit.prim, tri);
+%!   assert (hit.obj, double (isfinite (t)));
+%!   ## barycentrics give the hit point
+%!   P = (1 - hit.u(h) - hit.v(h)) .* V(F(tri(h),1),:) + hit.u(h) .* V(F(tri(h),2),:) ...
+%!       + hit.v(h) .* V(F(tri(h),3),:);
+%!   assert (P, O(h,:) + t(h) .* D(h,:), 1e-9);
+%!   ## leaf size 1 (deep tree), tmax and any-hit
+%!   obj.bvh = rt_bvh (V, F, 1);
+%!   hit1 = rt_intersect (obj, O, D, 0, tm, false, engine{1});
+%!   e = t; e(t >= tm) = Inf;
+%!   assert (hit1.t, e, 1e-9);
+%!   hita = rt_intersect (obj, O, D, 0, Inf, true, engine{1});
+%!   assert (isfinite (hita.t), isfinite (t));
+%!   assert (all (hita.t(h) >= t(h) - 1e-9));
+%!   hits{end+1} = hit;
+%! endfor
+%! ## the two engines: the same nearest hits, bit for bit
+%! assert (isequal (hits{1}, hits{2}));
+%! ## the default engine is the compiled one
+%! obj.bvh = [];
+%! assert (isequal (rt_intersect (obj, O, D), hits{2}));
 
 %!test
 %! ## spheres and planes: analytic distances, nearest object wins
@@ -313,3 +371,7 @@ endfunction
 %!error <Invalid call> rt_intersect (1, 2)
 %!error id=lafortune:badScene rt_intersect (1, [0 0 0], [0 0 1])
 %!error id=lafortune:badInput rt_intersect (struct ("type", "sphere"), [0 0], [0 0 1])
+%!error id=lafortune:badInput rt_intersect (struct ("type", "sphere"), [0 0 0], [0 0 1], 0, Inf, "yes")
+%!error id=lafortune:badInput rt_intersect (struct ("type", "sphere"), [0 0 1i], [0 0 1])
+%!error id=lafortune:badInput rt_intersect (struct ("type", "sphere"), [0 0 0; 1 1 1], [0 0 1; 0 0 1], [0 0 0])
+%!error id=lafortune:badOption rt_intersect (struct ("type", "sphere"), [0 0 0], [0 0 1], 0, Inf, false, "fast")

@@ -10,8 +10,10 @@
 ## -theta_h) written out term by term as the reader does, then its index
 ## formulas.  Same inputs, same doubles, same bins, including the cases
 ## where rounding decides: a direction exactly on a bin edge, or h along the
-## normal, where phi_h comes from atan2 of rounding residues.  merl_eval uses
-## it for the samples its faster path cannot place with certainty.
+## normal, where phi_h comes from atan2 of rounding residues.  merl_eval's
+## method "reference" (the benchmark's peer, and the fallback when the
+## oct-file __merl_nearest__ is missing); the oct-file's own copy of these
+## operations places the samples its fast path cannot place with certainty.
 ## @end deftypefn
 function idx = merl_index_ref (wi, wo)
   hx = (wi(:,1) + wo(:,1)) / 2;
