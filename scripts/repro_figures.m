@@ -77,7 +77,7 @@ function repro_figures ()
     F = jsondecode (fileread (fullfile (c.results, "fit", [mat ".json"])));
     subplot (1, numel (c.materials), i);
     for ch = 1:3
-      T = repro_trace (F.inplane.trace, ch);
+      T = [F.inplane.trace(ch).time(:), F.inplane.trace(ch).rmse(:)];
       loglog (max (T(:,1), 1e-3), T(:,2), "linewidth", 1.5);
       hold on;
     endfor

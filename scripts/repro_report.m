@@ -142,7 +142,7 @@ function repro_report ()
     mat = c.materials{i};
     F = D.(fieldname (mat)).F;
     for ch = 1:3
-      T = repro_trace (F.inplane.trace, ch);
+      T = [F.inplane.trace(ch).time(:), F.inplane.trace(ch).rmse(:)];
       fin = T(end,2);
       t10 = T(find (T(:,2) <= 1.1 * fin, 1), 1);
       t1 = T(find (T(:,2) <= 1.01 * fin, 1), 1);
