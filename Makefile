@@ -85,10 +85,12 @@ endif
 MESH ?=
 export RESULTS MERL_DIR QUICK MESH
 octrun = $(OCT) --path $(CURDIR)/inst --path $(CURDIR)/src --path $(CURDIR)/scripts \
-  --eval 'warning ("off", "Octave:shadowed-function"); pkg load optim; $(1)'
+  --eval 'sigterm_dumps_octave_core (false); sighup_dumps_octave_core (false); \
+  warning ("off", "Octave:shadowed-function"); pkg load optim; $(1)'
 # one per-material step (scripts/repro_step.m writes its JSON record): $(1) step, $(2) material
 octstep = $(OCT) --path $(CURDIR)/inst --path $(CURDIR)/src --path $(CURDIR)/scripts \
-  --eval 'warning ("off", "Octave:shadowed-function"); pkg load optim; repro_step ("$(1)", "$(2)")'
+  --eval 'sigterm_dumps_octave_core (false); sighup_dumps_octave_core (false); \
+  warning ("off", "Octave:shadowed-function"); pkg load optim; repro_step ("$(1)", "$(2)")'
 
 # ---- which project files each step may call: build/deps.mk, made from the
 # code by scripts/repro_deps.m (like a compiler's -MM), so that a change to a
