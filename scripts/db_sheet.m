@@ -5,9 +5,10 @@
 ## @deftypefn {} {@var{R} =} db_sheet (@var{material})
 ## Gallery step of `make database` (run by repro_step, which writes @var{R}
 ## to RESULTS/sheet/MATERIAL.json): the material's contact sheet
-## RESULTS/sheet/MATERIAL.png, one row per fit method, the measured-data
-## render first and then the render of each lobe count (titled METHOD K: PSNR), all
-## at the measured render's exposure.  @var{R}: @code{file} (the PNG's name,
+## RESULTS/sheet/MATERIAL.png, one row per fit method (in-plane: the
+## paper's, hemisphere: the toolbox's), the measured-data render first and
+## then the render of each lobe count, titled METHOD K: PSNR, all at the
+## measured render's exposure.  @var{R}: @code{file} (the PNG's name,
 ## relative to RESULTS) and @code{exposure} (stops).
 ## @end deftypefn
 function R = db_sheet (material)
@@ -21,22 +22,29 @@ function R = db_sheet (material)
   nm = numel (c.methods);
   nk = numel (c.lobes);
   label = struct ("inplane", "in-plane", "hemisphere", "hemisphere");
-  w = 200 * (1 + nk);
-  ht = round (w / (1 + nk) * c.size(1) / c.size(2) * nm + 60 * nm);
-  h = figure ("visible", "off", "position", [0, 0, w, ht]);
+  ## one panel per image, laid out by hand: image aspect kept, room for a title
+  pw = 220;
+  ph = round (pw * c.size(1) / c.size(2));
+  tt = 36;
+  W = pw * (1 + nk);
+  H = (ph + tt) * nm;
+  h = figure ("visible", "off", "position", [0, 0, W, H]);
   for i = 1:nm
     mth = c.methods{i};
-    subplot (nm, 1 + nk, (i - 1) * (1 + nk) + 1);
-    show (rgb, "measured");
-    for j = 1:nk
-      img = exrread (fullfile (rd, sprintf ("%s-%s-%d.exr", material, mth, c.lobes(j))));
-      subplot (nm, 1 + nk, (i - 1) * (1 + nk) + 1 + j);
-      name = mth;
-      if (isfield (label, mth))
-        name = label.(mth);
+    name = mth;
+    if (isfield (label, mth))
+      name = label.(mth);
+    endif
+    y = (nm - i) * (ph + tt) / H;
+    for j = 0:nk
+      axes ("position", [j * pw / W + 0.003, y + 0.003, pw / W - 0.006, ph / H - 0.006]);
+      if (j == 0)
+        show (rgb, "measured");
+      else
+        img = exrread (fullfile (rd, sprintf ("%s-%s-%d.exr", material, mth, c.lobes(j))));
+        show (img_tonemap (img, stops), sprintf ("%s %d: %.2f dB", name, c.lobes(j),
+                                                  fits.(mth)(j).psnr_pov));
       endif
-      show (img_tonemap (img, stops), sprintf ("%s %d: %.2f dB", name, c.lobes(j),
-                                                fits.(mth)(j).psnr_pov));
     endfor
   endfor
   sd = fullfile (c.results, "sheet");
@@ -56,7 +64,7 @@ endfunction
 
 function show (rgb, ttl)
   image (rgb);
-  axis image;
+  axis image off;
   set (gca, "xtick", [], "ytick", []);
-  title (ttl, "interpreter", "none");
+  title (ttl, "interpreter", "none", "fontsize", 9);
 endfunction
