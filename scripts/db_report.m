@@ -285,6 +285,13 @@ function plot_psnr (P, c, mats, label, file)
   graphics_toolkit ("gnuplot");
   nm = numel (c.methods);
   h = figure ("visible", "off", "position", [0 0 520 * nm 560]);
+  ## the same PSNR axis for every method
+  v = cell2mat (cellfun (@(m) P.(m)(:), c.methods(:), "uniformoutput", false));
+  v = v(isfinite (v));
+  yl = [0 50];
+  if (! isempty (v))
+    yl = [floor(min (v)) - 1, ceil(max (v)) + 1];
+  endif
   for i = 1:nm
     m = c.methods{i};
     subplot (1, nm, i);
@@ -299,6 +306,7 @@ function plot_psnr (P, c, mats, label, file)
     endfor
     hold off;
     xlim ([min(c.lobes) - 0.2, max(c.lobes) + 1.2]);
+    ylim (yl);
     set (gca, "xtick", c.lobes);
     xlabel ("lobes");
     ylabel ("PSNR against the measured render (dB)");
