@@ -69,7 +69,7 @@
 %!   mkdir (out);
 %!   __data (merl);
 %!   ## killed twice, at different points, then finished
-%!   for t = [4 12]
+%!   for t = [3 7]
 %!     cmd = sprintf (["cd '%s' && setsid make --no-print-directory -j2 database DB='%s' MERL_DIR='%s' " ...
 %!                     "QUICK=1 SIZE='24 12' SPP=2 HEMI_SAMPLES=2000 LOBES='1 2' POV_AA=0 " ...
 %!                     "> '%s/kill.log' 2>&1 & echo $!"], top, db, merl, out);
