@@ -188,7 +188,7 @@ database: deps
 ifneq ($(HOSTS),)
 	@$(MAKE) --no-print-directory -s $(DB)/settings.json
 	$(PARALLEL) --sshloginfile $(HOSTS) --workdir $(CURDIR) --halt never $(PARALLEL_OPTS) \
-	  make --no-print-directory -s db-{} MERL_DIR=$(DB_DATA) DB=$(abspath $(DB)) $(MAKEOVERRIDES) \
+	  make --no-print-directory -s db-{} $(MAKEOVERRIDES) MERL_DIR=$(DB_DATA) DB=$(abspath $(DB)) \
 	  ::: $(DB_MATS) || true
 endif
 	@$(MAKE) --no-print-directory -s $(DB_OUT)
