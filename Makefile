@@ -99,7 +99,7 @@ STEP_SCRIPTS := repro_fit repro_render_measured repro_render_fits repro_spp repr
   repro_report db_sheet db_report
 NO_STEP_GOALS := all deps check bench dist install clean distclean
 ifneq ($(filter-out $(NO_STEP_GOALS),$(MAKECMDGOALS)),)
-build/deps.mk: $(wildcard scripts/*.m inst/*.m inst/private/*.m src/*.cc)
+build/deps.mk: $(wildcard scripts/*.m inst/*.m inst/private/*.m src/*.cc) inst inst/private scripts
 	@mkdir -p build
 	@$(OCT) --path $(CURDIR)/scripts --eval 'repro_deps ("$@", "$(STEP_SCRIPTS)")'
 include build/deps.mk

@@ -51,6 +51,8 @@ function repro_deps (file, steps)
     dep = union (closure (k, uses), runner);
     L{end+1} = sprintf ("DEPS_%s := %s", s{1}, strjoin (sort (files(dep)), " "));
   endfor
+  ## as a compiler's -MP: a file removed since does not stop make
+  L{end+1} = sprintf ("%s:", strjoin (sort (files), " "));
   repro_save (file, [strjoin(L, "\n") "\n"]);
 endfunction
 
