@@ -150,7 +150,11 @@ $(R)/report.md $(R)/summary.json &: $(R)/figures/spp.png $(STEP_OUT) $(DEPS_repr
 #   make database MERL_DIR=dir                     on this machine
 #   make database MERL_DIR=dir HOSTS=file          per-material jobs on ssh hosts (GNU parallel)
 #   scripts/db_slurm_submit MERL_DIR=dir           a Slurm job array and a merge job
+ifeq ($(QUICK),1)
+DB ?= results/quick/database
+else
 DB ?= results/database
+endif
 DB_MATS := $(sort $(basename $(notdir $(wildcard $(MERL_DIR)/*.binary))))
 DB_DATA := $(abspath $(MERL_DIR))
 HOSTS ?=
