@@ -87,8 +87,11 @@ export RESULTS MERL_DIR QUICK MESH
 octrun = $(OCT) --path $(CURDIR)/inst --path $(CURDIR)/src --path $(CURDIR)/scripts \
   --eval 'sigterm_dumps_octave_core (false); sighup_dumps_octave_core (false); \
   warning ("off", "Octave:shadowed-function"); pkg load optim; $(1)'
+# POV-Ray's threads per render: all cores with one job, one per job with make -j N
+pov_threads = $(if $(filter command line environment,$(origin POV_THREADS)),$(POV_THREADS),$\
+  $(if $(filter-out -j1,$(filter -j%,$(MAKEFLAGS))),1,$(POV_THREADS)))
 # one per-material step (scripts/repro_step.m writes its JSON record): $(1) step, $(2) material
-octstep = $(OCT) --path $(CURDIR)/inst --path $(CURDIR)/src --path $(CURDIR)/scripts \
+octstep = POV_THREADS=$(pov_threads) $(OCT) --path $(CURDIR)/inst --path $(CURDIR)/src --path $(CURDIR)/scripts \
   --eval 'sigterm_dumps_octave_core (false); sighup_dumps_octave_core (false); \
   warning ("off", "Octave:shadowed-function"); pkg load optim; repro_step ("$(1)", "$(2)")'
 

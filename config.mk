@@ -32,6 +32,9 @@ SPP_STUDY_QUICK ?= 1 2 4
 # POV-Ray anti-aliasing of the fits' renders
 POV_AA ?= 4
 POV_AA_QUICK ?= 2
+# POV-Ray's render threads: 0 = all cores; `make -j N` (N > 1) uses 1 per job
+# unless POV_THREADS is given on the command line
+POV_THREADS ?= 0
 # torus scene resolution (major, minor)
 TORUS ?= 128 64
 TORUS_QUICK ?= 48 24

@@ -18,7 +18,7 @@
 ## steps of `make database`, which record a failure instead of stopping),
 ## @code{mesh}, @code{scene}, @code{materials}, @code{methods}, @code{lobes},
 ## @code{max_angle}, @code{hemi_samples}, @code{size}, @code{spp},
-## @code{spp_study}, @code{pov_aa}, @code{torus}, @code{fail_psnr},
+## @code{spp_study}, @code{pov_aa}, @code{pov_threads}, @code{torus}, @code{fail_psnr},
 ## @code{fail_gain}, and @code{paper_psnr} (the paper's numbers).
 ## @end deftypefn
 function c = repro_config (file)
@@ -44,6 +44,7 @@ function c = repro_config (file)
   c.spp = number (get ("SPP"), "SPP");
   c.spp_study = number (get ("SPP_STUDY"), "SPP_STUDY");
   c.pov_aa = number (get ("POV_AA"), "POV_AA");
+  c.pov_threads = number (get ("POV_THREADS"), "POV_THREADS");
   c.torus = number (get ("TORUS"), "TORUS");
   c.fail_psnr = number (get ("FAIL_PSNR"), "FAIL_PSNR");
   c.fail_gain = number (get ("FAIL_GAIN"), "FAIL_GAIN");

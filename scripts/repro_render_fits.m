@@ -29,7 +29,7 @@ function R = repro_render_fits (material)
       m = lafortune_import (fullfile (c.results, "fit", sprintf ("%s-%s-%d.json", material, mth, k)));
       printf ("reproduce: [%s] POV-Ray render, %s fit, %d lobe(s)\n", material, mth, k);
       fflush (stdout);
-      [img, pinfo] = pov_render (scene, m, "antialias", c.pov_aa);
+      [img, pinfo] = pov_render (scene, m, "antialias", c.pov_aa, "threads", c.pov_threads);
       base = fullfile (rd, sprintf ("%s-%s-%d", material, mth, k));
       exrwrite ([base ".exr"], img);
       img_write_png ([base ".png"], img, "auto");

@@ -11,7 +11,8 @@ function repro_settings ()
   c = repro_config ();
   ## not the folders nor the list of materials: a new material or a moved
   ## output folder must not make the other materials' steps out of date
-  s = rmfield (c, {"results", "data_dir", "merl_dir", "materials", "database"});
+  ## nor POV-Ray's thread count, which does not change the images
+  s = rmfield (c, {"results", "data_dir", "merl_dir", "materials", "database", "pov_threads"});
   txt = jsonencode (s);
   f = fullfile (c.results, "settings.json");
   if (exist (f, "file") && strcmp (fileread (f), txt))
