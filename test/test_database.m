@@ -65,20 +65,33 @@
 %! out = tempname ();
 %! merl = fullfile (out, "merl");
 %! db = fullfile (out, "db");
+%! pidf = fullfile (out, "make.pid");
 %! unwind_protect
 %!   mkdir (out);
 %!   __data (merl);
 %!   ## killed twice, at different points, then finished
 %!   for t = [3 7]
-%!     cmd = sprintf (["cd '%s' && setsid make --no-print-directory -j2 database DB='%s' MERL_DIR='%s' " ...
-%!                     "QUICK=1 SIZE='24 12' SPP=2 HEMI_SAMPLES=2000 LOBES='1 2' POV_AA=0 " ...
-%!                     "> '%s/kill.log' 2>&1 & echo $!"], top, db, merl, out);
-%!     [st, pid] = system (cmd);
-%!     pid = str2double (pid);
+%!     ## make in a process group of its own, whose id the shell writes down
+%!     cmd = sprintf (["setsid sh -c 'echo $$ > \"$0\"; exec make --no-print-directory -C \"$1\" -j2 database " ...
+%!                     "DB=\"$2\" MERL_DIR=\"$3\" QUICK=1 SIZE=\"24 12\" SPP=2 HEMI_SAMPLES=2000 " ...
+%!                     "LOBES=\"1 2\" POV_AA=0' '%s' '%s' '%s' '%s' > '%s/kill.log' 2>&1 &"],
+%!                    pidf, top, db, merl, out);
+%!     assert (system (cmd), 0);
 %!     pause (t);
-%!     system (sprintf ("kill -TERM -- -%d 2>/dev/null", pid));
+%!     pid = str2double (fileread (pidf));
+%!     assert (pid > 1);
+%!     assert (system (sprintf ("kill -TERM -%d", pid)), 0);   # the run was still going
 %!     pause (1);
-%!     system (sprintf ("kill -KILL -- -%d 2>/dev/null", pid));
+%!     system (sprintf ("kill -KILL -%d 2>/dev/null", pid));
+%!     ## nothing of it left running (zombies not yet reaped do not count)
+%!     alive = sprintf ("ps -e -o pgid=,stat= | awk '$1 == %d && $2 !~ /Z/' | grep -q .", pid);
+%!     for w = 1:50
+%!       if (system (alive) != 0)
+%!         break;
+%!       endif
+%!       pause (0.1);
+%!     endfor
+%!     assert (system (alive) != 0, "the killed run is still alive");
 %!   endfor
 %!   assert (! exist (fullfile (db, "table.csv"), "file"), "the killed runs should not have finished");
 %!   [st, txt] = __make (top, db, merl, "-j2 database");
@@ -170,6 +183,9 @@
 %!   assert (! isempty (strfind (L, "task 3")) && ! isempty (strfind (L, "merge: make")), L);
 %!   assert (isequal (__table (fullfile (db3, "table.csv")), T));
 %! unwind_protect_cleanup
+%!   if (exist (pidf, "file"))     # a run this test started and could not stop
+%!     system (sprintf ("kill -KILL -%d 2>/dev/null", str2double (fileread (pidf))));
+%!   endif
 %!   if (strncmp (out, tempdir (), numel (tempdir ())) && isfolder (out))
 %!     confirm_recursive_rmdir (false, "local");
 %!     rmdir (out, "s");
