@@ -70,7 +70,7 @@
 %!   mkdir (out);
 %!   __data (merl);
 %!   ## killed twice, at different points, then finished
-%!   for t = [3 7]
+%!   for t = [3 2]
 %!     ## make in a process group of its own, whose id the shell writes down
 %!     cmd = sprintf (["setsid sh -c 'echo $$ > \"$0\"; exec make --no-print-directory -C \"$1\" -j2 database " ...
 %!                     "DB=\"$2\" MERL_DIR=\"$3\" QUICK=1 SIZE=\"24 12\" SPP=2 HEMI_SAMPLES=2000 " ...
