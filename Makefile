@@ -1,6 +1,7 @@
 # lafortune: Lafortune-model fits of measured BRDF data (GNU Octave package)
 #
 #   make reproduce   the paper's results in results/ (fits, renders, PSNR, report)
+#   make database    every MERL file of MERL_DIR: fits, renders, table, report, gallery
 #   make check       build the package, install it into a scratch prefix, run all tests
 #   make bench       benchmark tables (fit speed, lookups, renders, EXR, POV-Ray)
 #   make dist        lafortune-<version>.tar.gz for `pkg install`
@@ -18,9 +19,9 @@ export MERL_PROXY_DIR
 # real MERL .binary files, when a user has them (make reproduce)
 MERL_DIR ?= data/merl
 QUICK ?= 0
-DEB_PACKAGES := octave octave-optim liboctave-dev libopenexr-dev pkg-config povray gnuplot-nox fonts-dejavu-core fonts-freefont-otf
+DEB_PACKAGES := octave octave-optim liboctave-dev libopenexr-dev pkg-config povray gnuplot-nox fonts-dejavu-core fonts-freefont-otf parallel
 
-.PHONY: all deps check bench dist install reproduce clean distclean
+.PHONY: all deps check bench dist install reproduce database clean distclean
 
 all: dist
 
@@ -72,31 +73,53 @@ bench: deps
 	$(MAKE) -C src
 	@for b in scripts/bench_*.m; do echo "== $$b"; $(OCT) --path src $$b || exit 1; echo; done
 
-# ---- make reproduce: incremental steps; each writes its outputs atomically ----
+# ---- configuration: the one list of materials and settings, also read by
+# the Octave steps (scripts/repro_config.m); override any value on the command
+# line, e.g. make reproduce SPP=16
+include config.mk
+
 ifeq ($(QUICK),1)
 RESULTS ?= results/quick
 else
 RESULTS ?= results
 endif
 MESH ?=
-SCENE ?= sphere
-export RESULTS MERL_DIR QUICK MESH SCENE
-MATS := green-metallic-paint red-plastic
-R := $(RESULTS)
-# a change to the toolbox's code makes every step out of date
-CODE := $(wildcard inst/*.m inst/private/*.m src/*.cc) scripts/repro_config.m scripts/repro_scene.m \
-  $(R)/settings.json
+export RESULTS MERL_DIR QUICK MESH
 octrun = $(OCT) --path $(CURDIR)/inst --path $(CURDIR)/src --path $(CURDIR)/scripts \
-  --eval 'warning ("off", "Octave:shadowed-function"); pkg load optim; $(1)'
-OUTPUTS := $(R)/report.md $(R)/summary.json
+  --eval 'sigterm_dumps_octave_core (false); sighup_dumps_octave_core (false); \
+  warning ("off", "Octave:shadowed-function"); pkg load optim; $(1)'
+# POV-Ray's threads per render: all cores with one job, one per job with make -j N
+pov_threads = $(if $(filter command line environment,$(origin POV_THREADS)),$(POV_THREADS),$\
+  $(if $(filter-out -j1,$(filter -j%,$(MAKEFLAGS))),1,$(POV_THREADS)))
+# one per-material step (scripts/repro_step.m writes its JSON record): $(1) step, $(2) material
+octstep = POV_THREADS=$(pov_threads) $(OCT) --path $(CURDIR)/inst --path $(CURDIR)/src --path $(CURDIR)/scripts \
+  --eval 'sigterm_dumps_octave_core (false); sighup_dumps_octave_core (false); \
+  warning ("off", "Octave:shadowed-function"); pkg load optim; repro_step ("$(1)", "$(2)")'
 
-reproduce: deps
-	@$(MAKE) --no-print-directory -C src
-	@$(MAKE) --no-print-directory -s $(OUTPUTS)
-	@echo "reproduce: done: $(R)/report.md, $(R)/summary.json, figures in $(R)/figures"
+# ---- which project files each step may call: build/deps.mk, made from the
+# code by scripts/repro_deps.m (like a compiler's -MM), so that a change to a
+# file under inst/ re-runs only the steps that may call it
+STEP_SCRIPTS := repro_fit repro_render_measured repro_render_fits repro_spp repro_figures \
+  repro_report db_sheet db_report
+NO_STEP_GOALS := all deps check bench dist install clean distclean
+ifneq ($(filter-out $(NO_STEP_GOALS),$(MAKECMDGOALS)),)
+build/deps.mk: $(wildcard scripts/*.m inst/*.m inst/private/*.m src/*.cc) inst inst/private scripts
+	@mkdir -p build
+	@$(OCT) --path $(CURDIR)/scripts --eval 'repro_deps ("$@", "$(STEP_SCRIPTS)")'
+include build/deps.mk
+endif
 
 .PHONY: FORCE
 FORCE:
+
+# ---- make reproduce: incremental steps; each writes its outputs atomically ----
+MATS := $(MATERIALS)
+R := $(RESULTS)
+
+reproduce: deps
+	@$(MAKE) --no-print-directory -C src
+	@$(MAKE) --no-print-directory -s $(R)/report.md $(R)/summary.json
+	@echo "reproduce: done: $(R)/report.md, $(R)/summary.json, figures in $(R)/figures"
 
 $(R)/settings.json: FORCE
 	@$(call octrun,repro_settings ())
@@ -104,27 +127,98 @@ $(R)/settings.json: FORCE
 $(R)/data/%.binary: FORCE
 	@$(call octrun,repro_data ("$*"))
 
-$(R)/fit/%.json: $(R)/data/%.binary scripts/repro_fit.m $(CODE)
-	@$(call octrun,repro_fit ("$*"))
+$(R)/fit/%.json: $(R)/data/%.binary $(R)/settings.json $(DEPS_repro_fit)
+	@$(call octstep,fit,$*)
 
-$(R)/render/%-measured.json: $(R)/data/%.binary scripts/repro_render_measured.m $(CODE)
-	@$(call octrun,repro_render_measured ("$*"))
+$(R)/render/%-measured.json: $(R)/data/%.binary $(R)/settings.json $(MESH) $(DEPS_repro_render_measured)
+	@$(call octstep,render_measured,$*)
 
-$(R)/render/%-fits.json: $(R)/fit/%.json $(R)/render/%-measured.json scripts/repro_render_fits.m $(CODE)
-	@$(call octrun,repro_render_fits ("$*"))
+$(R)/render/%-fits.json: $(R)/fit/%.json $(R)/render/%-measured.json $(DEPS_repro_render_fits)
+	@$(call octstep,render_fits,$*)
 
-$(R)/spp/%.json: $(R)/render/%-measured.json scripts/repro_spp.m $(CODE)
-	@$(call octrun,repro_spp ("$*"))
+$(R)/spp/%.json: $(R)/render/%-measured.json $(DEPS_repro_spp)
+	@$(call octstep,spp,$*)
 
 STEP_OUT := $(foreach m,$(MATS),$(R)/fit/$(m).json $(R)/render/$(m)-fits.json $(R)/spp/$(m).json)
 
-$(R)/figures/spp.png: $(STEP_OUT) scripts/repro_figures.m $(CODE)
+$(R)/figures/spp.png: $(STEP_OUT) $(DEPS_repro_figures)
 	@$(call octrun,repro_figures ())
 
-$(OUTPUTS) &: $(R)/figures/spp.png $(STEP_OUT) scripts/repro_report.m $(CODE)
+$(R)/report.md $(R)/summary.json &: $(R)/figures/spp.png $(STEP_OUT) $(DEPS_repro_report)
 	@$(call octrun,repro_report ())
 
+# ---- make database: every *.binary in MERL_DIR, one target per material
+# (db-MATERIAL), so that `make -j N database` runs N materials at once; each
+# step's record is written last and atomically, so a killed run restarted
+# finishes the rest and a rerun with nothing changed does nothing.
+#   make database MERL_DIR=dir                     on this machine
+#   make database MERL_DIR=dir HOSTS=file          per-material jobs on ssh hosts (GNU parallel)
+#   scripts/db_slurm_submit MERL_DIR=dir           a Slurm job array and a merge job
+ifeq ($(QUICK),1)
+DB ?= results/quick/database
+else
+DB ?= results/database
+endif
+DB_MATS := $(sort $(basename $(notdir $(wildcard $(MERL_DIR)/*.binary))))
+DB_DATA := $(abspath $(MERL_DIR))
+HOSTS ?=
+PARALLEL ?= parallel
+PARALLEL_OPTS ?=
+# the steps of one material: $(1) step, $(2) material
+dbstep = RESULTS=$(DB)/materials/$(2) DATA_DIR=$(DB_DATA) DATABASE=1 $(call octstep,$(1),$(2))
+dbdir = $(DB)/materials/$(1)
+
+define db_material
+$(call dbdir,$(1))/fit/$(1).json: $(MERL_DIR)/$(1).binary $(DB)/settings.json $$(DEPS_repro_fit)
+	@$$(call dbstep,fit,$(1))
+
+$(call dbdir,$(1))/render/$(1)-measured.json: $(MERL_DIR)/$(1).binary $(DB)/settings.json $(MESH) $$(DEPS_repro_render_measured)
+	@$$(call dbstep,render_measured,$(1))
+
+$(call dbdir,$(1))/render/$(1)-fits.json: $(call dbdir,$(1))/fit/$(1).json $(call dbdir,$(1))/render/$(1)-measured.json $$(DEPS_repro_render_fits)
+	@$$(call dbstep,render_fits,$(1))
+
+$(call dbdir,$(1))/sheet/$(1).json: $(call dbdir,$(1))/render/$(1)-fits.json $$(DEPS_db_sheet)
+	@$$(call dbstep,sheet,$(1))
+
+.PHONY: db-$(1)
+db-$(1): $(call dbdir,$(1))/sheet/$(1).json
+endef
+$(foreach m,$(DB_MATS),$(eval $(call db_material,$(m))))
+
+DB_OUT := $(DB)/table.csv $(DB)/report.md $(DB)/summary.json $(DB)/gallery/index.html \
+  $(DB)/figures/psnr-lobes.png
+
+.PHONY: database db-list
+database: deps
+	@test -n "$(DB_MATS)" || { echo "database: no *.binary file in MERL_DIR=$(MERL_DIR)" >&2; exit 1; }
+	@$(MAKE) --no-print-directory -C src
+ifneq ($(HOSTS),)
+	@$(MAKE) --no-print-directory -s $(DB)/settings.json
+	$(PARALLEL) --sshloginfile $(HOSTS) --workdir $(CURDIR) --halt never $(PARALLEL_OPTS) \
+	  make --no-print-directory -s db-{} $(MAKEOVERRIDES) MERL_DIR=$(DB_DATA) DB=$(abspath $(DB)) \
+	  ::: $(DB_MATS) || true
+endif
+	@$(MAKE) --no-print-directory -s $(DB_OUT)
+	@echo "database: done: $(DB)/report.md, $(DB)/table.csv, $(DB)/gallery/index.html"
+
+# the materials, one per line (for job arrays)
+db-list:
+	@printf '%s\n' $(DB_MATS)
+
+$(DB)/settings.json: FORCE
+	@RESULTS=$(DB) DATABASE=1 $(call octrun,repro_settings ())
+
+# rewritten only when the list of materials changes
+$(DB)/materials.txt: FORCE
+	@mkdir -p $(DB) && printf '%s\n' $(DB_MATS) > $@.tmp && \
+	  if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv -f $@.tmp $@; fi
+
+$(DB_OUT) &: $(DB)/materials.txt $(foreach m,$(DB_MATS),$(call dbdir,$(m))/sheet/$(m).json) $(DEPS_db_report)
+	@RESULTS=$(DB) DATABASE=1 MATERIALS="$(DB_MATS)" $(call octrun,db_report ())
+
 .SECONDARY:
+.DELETE_ON_ERROR:
 
 clean:
 	rm -rf build $(TARBALL) $(TARBALL).tmp

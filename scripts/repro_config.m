@@ -2,43 +2,100 @@
 ## SPDX-License-Identifier: GPL-3.0-or-later
 
 ## -*- texinfo -*-
-## @deftypefn {} {@var{c} =} repro_config ()
-## Settings of `make reproduce`, from the environment that the Makefile sets:
-## RESULTS (output folder), MERL_DIR (real MERL files), QUICK (1: classroom
-## run under a minute), SCENE (built-in scene: sphere, the default, spheres
-## or torus) and MESH (a PLY/OBJ file, e.g. the Happy Buddha, which then
-## replaces the built-in scene).
+## @deftypefn  {} {@var{c} =} repro_config ()
+## @deftypefnx {} {@var{c} =} repro_config (@var{file})
+## Settings of `make reproduce` and `make database`.
+##
+## The materials and settings are written once, in the project's
+## @file{config.mk} (or @var{file}), which the Makefile includes too: one
+## @code{NAME ?= value} per line.  A variable set in the environment (the
+## make command line passes its variables there) overrides the file; with
+## QUICK=1, @code{NAME_QUICK} replaces @code{NAME} unless NAME itself is set.
+##
+## Fields: @code{results} (RESULTS: the output folder), @code{data_dir}
+## (DATA_DIR: where the steps read MATERIAL.binary; default RESULTS/data),
+## @code{merl_dir} (MERL_DIR), @code{quick}, @code{database} (DATABASE=1: the
+## steps of `make database`, which record a failure instead of stopping),
+## @code{mesh}, @code{scene}, @code{materials}, @code{methods}, @code{lobes},
+## @code{max_angle}, @code{hemi_samples}, @code{size}, @code{spp},
+## @code{spp_study}, @code{pov_aa}, @code{pov_threads}, @code{torus}, @code{fail_psnr},
+## @code{fail_gain}, and @code{paper_psnr} (the paper's numbers).
 ## @end deftypefn
-function c = repro_config ()
-  c.results = getenv_default ("RESULTS", "results");
-  c.merl_dir = getenv_default ("MERL_DIR", "data/merl");
-  c.quick = str2double (getenv_default ("QUICK", "0")) == 1;
-  c.mesh = getenv_default ("MESH", "");
-  c.scene = getenv_default ("SCENE", "sphere");
-  c.materials = {"green-metallic-paint", "red-plastic"};
-  c.lobes = 1:3;
-  c.max_angle = 80;             # grazing angles beyond this are left out
-  ## the paper: 256 x 512 image, 128 rays per pixel
+function c = repro_config (file)
+  if (nargin < 1)
+    file = fullfile (fileparts (mfilename ("fullpath")), "..", "config.mk");
+  endif
+  v = read_config (file);
+  c.results = env_or ("RESULTS", "results");
+  c.data_dir = env_or ("DATA_DIR", fullfile (c.results, "data"));
+  c.merl_dir = env_or ("MERL_DIR", "data/merl");
+  c.quick = str2double (env_or ("QUICK", "0")) == 1;
+  c.database = str2double (env_or ("DATABASE", "0")) == 1;
+  c.mesh = env_or ("MESH", "");
+  get = @(name) setting (v, name, c.quick);
+  c.scene = get ("SCENE");
+  c.materials = strsplit (get ("MATERIALS"));
+  c.materials(cellfun ("isempty", c.materials)) = [];
+  c.methods = strsplit (get ("METHODS"));
+  c.lobes = number (get ("LOBES"), "LOBES");
+  c.max_angle = number (get ("MAX_ANGLE"), "MAX_ANGLE");
+  c.hemi_samples = number (get ("HEMI_SAMPLES"), "HEMI_SAMPLES");
+  c.size = number (get ("SIZE"), "SIZE");
+  c.spp = number (get ("SPP"), "SPP");
+  c.spp_study = number (get ("SPP_STUDY"), "SPP_STUDY");
+  c.pov_aa = number (get ("POV_AA"), "POV_AA");
+  c.pov_threads = number (get ("POV_THREADS"), "POV_THREADS");
+  c.torus = number (get ("TORUS"), "TORUS");
+  c.fail_psnr = number (get ("FAIL_PSNR"), "FAIL_PSNR");
+  c.fail_gain = number (get ("FAIL_GAIN"), "FAIL_GAIN");
+  ## the paper's PSNR (256 x 512 image of the Happy Buddha, 128 rays per pixel)
   c.paper_psnr = struct ("green_metallic_paint", [29.27 31.44 31.02],
                          "red_plastic", [28.12 27.56 27.81]);
-  if (c.quick)
-    c.size = [128 64];
-    c.spp = 8;
-    c.spp_study = [1 2 4];
-    c.pov_aa = 2;
-    c.hemi_samples = 5000;
-    c.torus = [48 24];
+endfunction
+
+function v = read_config (file)
+  txt = fileread (file);
+  v = struct ();
+  for line = strsplit (txt, "\n")
+    s = regexprep (line{1}, "#.*$", "");
+    tok = regexp (s, '^\s*([A-Z][A-Z0-9_]*)\s*\?=\s*(.*?)\s*$', "tokens", "once");
+    if (isempty (tok))
+      if (! isempty (strtrim (s)))
+        error ("lafortune:badConfig", "repro_config: %s: cannot read the line '%s': expected NAME ?= value",
+               file, strtrim (line{1}));
+      endif
+      continue;
+    endif
+    v.(tok{1}) = tok{2};
+  endfor
+endfunction
+
+function x = setting (v, name, quick)
+  x = getenv (name);
+  if (! isempty (x))
+    return;
+  endif
+  qname = [name "_QUICK"];
+  if (quick && ! isempty (getenv (qname)))
+    x = getenv (qname);
+  elseif (quick && isfield (v, qname))
+    x = v.(qname);
+  elseif (isfield (v, name))
+    x = v.(name);
   else
-    c.size = [512 256];
-    c.spp = 128;
-    c.spp_study = [1 2 4 8 16 32 64];
-    c.pov_aa = 4;
-    c.hemi_samples = 40000;
-    c.torus = [128 64];
+    error ("lafortune:badConfig", "repro_config: no setting %s in config.mk or the environment", name);
   endif
 endfunction
 
-function v = getenv_default (name, def)
+function x = number (s, name)
+  x = str2double (strsplit (strtrim (s)));
+  if (isempty (x) || any (! isfinite (x)))
+    error ("lafortune:badConfig", "repro_config: %s is '%s': expected numbers separated by spaces",
+           name, s);
+  endif
+endfunction
+
+function v = env_or (name, def)
   v = getenv (name);
   if (isempty (v))
     v = def;

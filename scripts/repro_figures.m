@@ -78,10 +78,10 @@ function repro_figures ()
                                           mat, columns (ref), rows (ref), c.spp),
                         "file", fullfile (fd, ["renders-" mat ".png"])));
     Fi = jsondecode (fileread (fullfile (c.results, "fit", [mat ".json"])));
-    fits{i} = Fi.inplane;
-    if (! isfield (fits{i}, "history") && isfield (Fi.inplane, "errors"))
-      fits{i}.history = Fi.inplane.errors.inplane.rmse;
-    endif
+    ## the step's record: trace(ch).time, .rmse per channel
+    tr = Fi.inplane.trace;
+    fits{i} = struct ("trace", {arrayfun(@(t) [t.time(:), t.rmse(:)], tr(:)', "uniformoutput", false)},
+                      "lobe_time", Fi.inplane.lobe_time, "history", Fi.inplane.errors.inplane.rmse);
   endfor
   ## fit error against run time
   done (plot_trace (fits, "names", c.materials,

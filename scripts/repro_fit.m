@@ -2,25 +2,45 @@
 ## SPDX-License-Identifier: GPL-3.0-or-later
 
 ## -*- texinfo -*-
-## @deftypefn {} {} repro_fit (@var{material})
-## Step 2 of `make reproduce`: fit 1, 2 and 3 lobes per channel, the paper's
-## way (in-plane table, grazing angles left out) and over the whole valid
-## hemisphere; export every model (JSON, text table, BRDF Explorer) and write
-## RESULTS/fit/MATERIAL.json with errors, times and the error-against-time
-## traces.
+## @deftypefn {} {@var{R} =} repro_fit (@var{material})
+## Fit step of `make reproduce` and `make database` (run by repro_step, which
+## writes @var{R} to RESULTS/fit/MATERIAL.json): fit 1 to max(LOBES) lobes
+## per channel to DATA_DIR/MATERIAL.binary with each method of METHODS:
+## @code{inplane}, the paper's way (plane of incidence, grazing angles left
+## out), and @code{hemisphere}, the toolbox's fit of the whole valid
+## hemisphere (subsampled); export every model to RESULTS/fit/
+## MATERIAL-METHOD-K.json, .txt and .brdf (BRDF Explorer).
+##
+## @var{R}: @code{lobes}, and per method (@code{R.inplane},
+## @code{R.hemisphere}): @code{samples}, @code{time}, @code{iterations},
+## @code{converged}, @code{lobe_time} (K x 3), @code{errors.TABLE.rmse},
+## @code{rel_rmse}, @code{log_rmse}, @code{cos_rmse} (K x 3, of each model
+## on each method's table; cos_rmse is weighted by cos theta_i as in Ngan et
+## al. 2005), @code{models} (struct array) and @code{trace} (3 x 1 struct
+## array, one per channel: @code{channel}, @code{time}, @code{rmse}: the
+## error of the best fit so far against run time).
 ## @end deftypefn
-function repro_fit (material)
+function R = repro_fit (material)
   c = repro_config ();
   warning ("off", "lafortune:notConverged");
-  b = merl_read (fullfile (c.results, "data", [material ".binary"]));
-  S.inplane = merl_plane (b, "max_angle", c.max_angle);
-  S.hemisphere = merl_samples (b, "max_angle", c.max_angle, "max_samples", c.hemi_samples);
+  b = merl_read (fullfile (c.data_dir, [material ".binary"]));
+  for method = c.methods
+    switch (method{1})
+      case "inplane"
+        S.inplane = merl_plane (b, "max_angle", c.max_angle);
+      case "hemisphere"
+        S.hemisphere = merl_samples (b, "max_angle", c.max_angle, "max_samples", c.hemi_samples);
+      otherwise
+        error ("lafortune:badConfig", "repro_fit: unknown method '%s' in METHODS: expected inplane or hemisphere",
+               method{1});
+    endswitch
+  endfor
   outdir = fullfile (c.results, "fit");
   if (! isfolder (outdir))
     mkdir (outdir);
   endif
   R = struct ("material", material, "lobes", c.lobes);
-  for method = {"inplane", "hemisphere"}
+  for method = c.methods
     mth = method{1};
     printf ("reproduce: [%s] fitting 1..%d lobes, %s (%d samples)\n", material,
             max (c.lobes), mth, rows (S.(mth).wi));
@@ -37,7 +57,7 @@ function repro_fit (material)
       lafortune_export (m, [base ".txt"], "text");
       lafortune_export (m, [base ".brdf"], "brdfexplorer");
       ## errors of this model on both tables
-      for t = {"inplane", "hemisphere"}
+      for t = c.methods
         e = model_errors (m, S.(t{1}));
         r.errors.(t{1}).rmse(k,:) = e.rmse;
         r.errors.(t{1}).rel_rmse(k,:) = e.rel_rmse;
@@ -47,29 +67,28 @@ function repro_fit (material)
       r.models{k} = rmfield (m, "name");
     endfor
     ## the error-against-time traces, thinned for the record
+    chn = "RGB";
     for ch = 1:3
       T = info.trace{ch};
       keep = unique ([1:max(1, floor (rows (T) / 200)):rows(T), rows(T)]);
-      r.trace{ch} = T(keep,:);
+      r.trace(ch,1) = struct ("channel", chn(ch), "time", T(keep,1)', "rmse", T(keep,2)');
     endfor
     R.(mth) = r;
     printf ("reproduce: [%s] %s rmse (mean RGB) for %s lobes: %s; %.1f s\n", material, mth,
             mat2str (c.lobes), mat2str (mean (r.errors.(mth).rmse, 2)', 4), sum (info.time));
   endfor
-  repro_save (fullfile (outdir, [material ".json"]), R);
 endfunction
 
+## the errors of model M on the table S, by lafortune_error (the one place
+## where the metrics are defined)
 function e = model_errors (m, S)
-  f = lafortune_eval (m, S.wi, S.wo);
-  y = S.rgb;
-  r = f - y;
-  e.rmse = sqrt (mean (r .^ 2));
-  e.rel_rmse = e.rmse ./ max (sqrt (mean (y .^ 2)), realmin);
-  d = zeros (1, 3);
-  for ch = 1:3
-    yp = y(y(:,ch) > 0, ch);
-    d(ch) = 0.01 * median (yp);
-  endfor
-  e.log_rmse = sqrt (mean ((log (max (f, 0) + d) - log (max (y, 0) + d)) .^ 2));
-  e.cos_rmse = sqrt (mean ((r .* S.wi(:,3)) .^ 2));
+  e.rmse = lafortune_error (m, S, "plain");
+  e.rel_rmse = e.rmse ./ max (lafortune_error (zero_model (m), S, "plain"), realmin);
+  e.log_rmse = lafortune_error (m, S, "log");
+  e.cos_rmse = lafortune_error (m, S, "cosine");
+endfunction
+
+## the model that is 0 everywhere: its plain error is the rms of the data
+function z = zero_model (m)
+  z = struct ("rho_d", [0 0 0], "Cxy", zeros (0, 3), "Cz", zeros (0, 3), "e", zeros (0, 3));
 endfunction

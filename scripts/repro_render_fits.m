@@ -2,34 +2,41 @@
 ## SPDX-License-Identifier: GPL-3.0-or-later
 
 ## -*- texinfo -*-
-## @deftypefn {} {} repro_render_fits (@var{material})
-## Step 4 of `make reproduce`: every fitted model (in-plane and hemisphere,
-## 1..3 lobes) rendered with POV-Ray in the same scene as the measured data,
-## and, as a control on the renderers, the in-plane fits with the Octave
-## raytracer too (same samples as the measured render).  PSNR of each against the measured
-## render (peak = the measured image's maximum).  Writes
-## RESULTS/render/MATERIAL-METHOD-K.exr and RESULTS/render/MATERIAL-fits.json.
+## @deftypefn {} {@var{R} =} repro_render_fits (@var{material})
+## Render step of `make reproduce` and `make database` (run by repro_step,
+## which writes @var{R} to RESULTS/render/MATERIAL-fits.json): every fitted
+## model (each method of METHODS, each lobe count of LOBES) rendered with
+## POV-Ray in the same scene as the measured data, and, in `make reproduce`
+## only, as a control on the renderers, the in-plane fits with the Octave
+## raytracer too (same samples as the measured render).  PSNR of each
+## against the measured render (peak = the measured image's maximum).
+## Writes RESULTS/render/MATERIAL-METHOD-K.exr and .png.
+##
+## @var{R}: @code{antialias} and per method a struct array (one per lobe
+## count) with @code{lobes}, @code{psnr_pov}, @code{psnr_rt},
+## @code{renderers_psnr}, @code{pov_time}, @code{pov_scene_bytes},
+## @code{rt_time} (NaN where not rendered; JSON null).
 ## @end deftypefn
-function repro_render_fits (material)
+function R = repro_render_fits (material)
   c = repro_config ();
   scene = repro_scene (c);
   rd = fullfile (c.results, "render");
   ref = exrread (fullfile (rd, [material "-measured.exr"]));
   R = struct ("material", material, "antialias", c.pov_aa);
-  for method = {"inplane", "hemisphere"}
+  for method = c.methods
     mth = method{1};
     for k = c.lobes
       m = lafortune_import (fullfile (c.results, "fit", sprintf ("%s-%s-%d.json", material, mth, k)));
       printf ("reproduce: [%s] POV-Ray render, %s fit, %d lobe(s)\n", material, mth, k);
       fflush (stdout);
-      [img, pinfo] = pov_render (scene, m, "antialias", c.pov_aa);
+      [img, pinfo] = pov_render (scene, m, "antialias", c.pov_aa, "threads", c.pov_threads);
       base = fullfile (rd, sprintf ("%s-%s-%d", material, mth, k));
       exrwrite ([base ".exr"], img);
       img_write_png ([base ".png"], img, "auto");
       r = struct ("lobes", k, "psnr_pov", img_psnr (ref, img), "psnr_rt", NaN,
                   "renderers_psnr", NaN, "pov_time", pinfo.time, "pov_scene_bytes", pinfo.bytes,
                   "rt_time", NaN);
-      if (strcmp (mth, "inplane"))
+      if (strcmp (mth, "inplane") && ! c.database)
         ## the control: the same model through the Octave raytracer, with the
         ## measured render's samples
         [img_rt, rinfo] = rt_render (scene, m, "progress", false);
@@ -37,7 +44,7 @@ function repro_render_fits (material)
         r.renderers_psnr = img_psnr (img_rt, img);
         r.rt_time = rinfo.time_total;
       endif
-      R.(mth)(k) = r;
+      R.(mth)(find (c.lobes == k)) = r;
       printf ("reproduce: [%s] %s %d lobe(s): PSNR %.2f dB (POV-Ray, %.1f s)", material, mth, k,
               r.psnr_pov, r.pov_time);
       if (! isnan (r.psnr_rt))
@@ -46,5 +53,4 @@ function repro_render_fits (material)
       printf ("\n");
     endfor
   endfor
-  repro_save (fullfile (rd, [material "-fits.json"]), R);
 endfunction

@@ -2,14 +2,17 @@
 ## SPDX-License-Identifier: GPL-3.0-or-later
 
 ## -*- texinfo -*-
-## @deftypefn {} {} repro_render_measured (@var{material})
-## Step 3 of `make reproduce`: the scene rendered with the measured data by
-## the Octave raytracer: RESULTS/render/MATERIAL-measured.exr and .json
-## (times, memory of the material).
+## @deftypefn {} {@var{R} =} repro_render_measured (@var{material})
+## Render step of `make reproduce` and `make database` (run by repro_step,
+## which writes @var{R} to RESULTS/render/MATERIAL-measured.json): the scene
+## rendered with the measured data DATA_DIR/MATERIAL.binary by the Octave
+## raytracer, RESULTS/render/MATERIAL-measured.exr and .png.  @var{R}:
+## @code{scene}, @code{width}, @code{height}, @code{spp} and @code{info}
+## (rt_render's times and memory).
 ## @end deftypefn
-function repro_render_measured (material)
+function R = repro_render_measured (material)
   c = repro_config ();
-  b = merl_read (fullfile (c.results, "data", [material ".binary"]));
+  b = merl_read (fullfile (c.data_dir, [material ".binary"]));
   scene = repro_scene (c);
   printf ("reproduce: [%s] rendering the measured data (rt_render, %d x %d, %d spp)\n",
           material, scene.width, scene.height, scene.spp);
@@ -21,9 +24,8 @@ function repro_render_measured (material)
   endif
   exrwrite (fullfile (outdir, [material "-measured.exr"]), img);
   img_write_png (fullfile (outdir, [material "-measured.png"]), img, "auto");
-  r = struct ("material", material, "scene", scene.name, "width", scene.width,
+  R = struct ("material", material, "scene", scene.name, "width", scene.width,
               "height", scene.height, "spp", scene.spp, "info", clean_info (info));
-  repro_save (fullfile (outdir, [material "-measured.json"]), r);
   printf ("reproduce: [%s] measured render: %.1f s\n", material, info.time_total);
 endfunction
 

@@ -61,9 +61,16 @@ function repro_report ()
     F = jsondecode (fileread (fullfile (c.results, "fit", [mat ".json"])));
     P = jsondecode (fileread (fullfile (c.results, "spp", [mat ".json"])));
     M = jsondecode (fileread (fullfile (c.results, "render", [mat "-measured.json"])));
-    paper = c.paper_psnr.(fieldname (mat));
+    paper = nan (1, max (c.lobes));       # a material the paper did not fit
+    if (isfield (c.paper_psnr, fieldname (mat)))
+      paper = c.paper_psnr.(fieldname (mat));
+    endif
     for k = c.lobes
-      L{end+1} = sprintf ("| %s | %d | %.2f dB | %.2f dB | %.2f dB | %.2f dB | %.1f dB |", mat, k, paper(k),
+      ptxt = "-";
+      if (k <= numel (paper) && ! isnan (paper(k)))
+        ptxt = sprintf ("%.2f dB", paper(k));
+      endif
+      L{end+1} = sprintf ("| %s | %d | %s | %.2f dB | %.2f dB | %.2f dB | %.1f dB |", mat, k, ptxt,
                           R.inplane(k).psnr_pov, R.inplane(k).psnr_rt, R.hemisphere(k).psnr_pov,
                           R.inplane(k).renderers_psnr);
     endfor
@@ -88,8 +95,10 @@ function repro_report ()
     D.(fieldname (mat)) = struct ("F", F, "R", R, "P", P, "M", M);
   endfor
   L{end+1} = "";
-  L{end+1} = "![measured and fitted renders, green metallic paint](figures/renders-green-metallic-paint.png)";
-  L{end+1} = "![measured and fitted renders, red plastic](figures/renders-red-plastic.png)";
+  for i = 1:numel (c.materials)
+    L{end+1} = sprintf ("![measured and fitted renders, %s](figures/renders-%s.png)",
+                        strrep (c.materials{i}, "-", " "), c.materials{i});
+  endfor
   L{end+1} = "";
   L{end+1} = "Each fit's render has its difference image (|fit - measured| averaged over channels, white = 10% of the peak) in the corner.";
   L{end+1} = "";
@@ -114,8 +123,10 @@ function repro_report ()
     endfor
   endfor
   L{end+1} = "";
-  L{end+1} = "![in-plane data and fits, green metallic paint](figures/plane-green-metallic-paint.png)";
-  L{end+1} = "![in-plane data and fits, red plastic](figures/plane-red-plastic.png)";
+  for i = 1:numel (c.materials)
+    L{end+1} = sprintf ("![in-plane data and fits, %s](figures/plane-%s.png)",
+                        strrep (c.materials{i}, "-", " "), c.materials{i});
+  endfor
   L{end+1} = "";
   L{end+1} = "Parameters of the in-plane fits (the paper's layout; JSON, text and BRDF Explorer files in `fit/`):";
   L{end+1} = "";
@@ -142,7 +153,7 @@ function repro_report ()
     mat = c.materials{i};
     F = D.(fieldname (mat)).F;
     for ch = 1:3
-      T = repro_trace (F.inplane.trace, ch);
+      T = [F.inplane.trace(ch).time(:), F.inplane.trace(ch).rmse(:)];
       fin = T(end,2);
       t10 = T(find (T(:,2) <= 1.1 * fin, 1), 1);
       t1 = T(find (T(:,2) <= 1.01 * fin, 1), 1);

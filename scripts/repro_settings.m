@@ -3,13 +3,16 @@
 
 ## -*- texinfo -*-
 ## @deftypefn {} {} repro_settings ()
-## Step 0 of `make reproduce`: RESULTS/settings.json, the settings every
+## Step 0 of `make reproduce` and `make database`: RESULTS/settings.json, the settings every
 ## later step depends on (scene, sizes, samples, data folder).  Rewritten only
 ## when they change, so that Make redoes exactly the steps they affect.
 ## @end deftypefn
 function repro_settings ()
   c = repro_config ();
-  s = rmfield (c, "results");
+  ## not the folders nor the list of materials: a new material or a moved
+  ## output folder must not make the other materials' steps out of date
+  ## nor POV-Ray's thread count, which does not change the images
+  s = rmfield (c, {"results", "data_dir", "merl_dir", "materials", "database", "pov_threads"});
   txt = jsonencode (s);
   f = fullfile (c.results, "settings.json");
   if (exist (f, "file") && strcmp (fileread (f), txt))

@@ -2,14 +2,16 @@
 ## SPDX-License-Identifier: GPL-3.0-or-later
 
 ## -*- texinfo -*-
-## @deftypefn {} {} repro_spp (@var{material})
-## Step 5 of `make reproduce`, error against run time for rendering: the
-## measured data rendered with fewer samples per pixel, render time and PSNR
-## against the full render.  Writes RESULTS/spp/MATERIAL.json.
+## @deftypefn {} {@var{R} =} repro_spp (@var{material})
+## Step of `make reproduce` (run by repro_step, which writes @var{R} to
+## RESULTS/spp/MATERIAL.json), error against run time for rendering: the
+## measured data rendered with fewer samples per pixel (SPP_STUDY), render
+## time and PSNR against the full render.  @var{R}: @code{reference_spp},
+## @code{reference_time}, @code{spp}, @code{time}, @code{psnr} (vectors).
 ## @end deftypefn
-function repro_spp (material)
+function R = repro_spp (material)
   c = repro_config ();
-  b = merl_read (fullfile (c.results, "data", [material ".binary"]));
+  b = merl_read (fullfile (c.data_dir, [material ".binary"]));
   ref = exrread (fullfile (c.results, "render", [material "-measured.exr"]));
   mj = jsondecode (fileread (fullfile (c.results, "render", [material "-measured.json"])));
   scene = repro_scene (c);
@@ -26,5 +28,4 @@ function repro_spp (material)
             c.spp_study(i), R.time(i), R.psnr(i), R.reference_spp);
     fflush (stdout);
   endfor
-  repro_save (fullfile (c.results, "spp", [material ".json"]), R);
 endfunction
