@@ -153,7 +153,11 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
   cosi = S.wi(:,3);
   wt = S.weight;
   [j, xc, jr, xr, info_reduce] = groups (x, wt, opt);
-  G = fit_guard (min ([S.wi(:,3); S.wo(:,3)]));
+  if (isfield (S, "kind") && strcmp (S.kind, "scene"))
+    G.x = x;          # a scene table: the angle pairs the scene reaches, densely
+  else
+    G = fit_guard (min ([S.wi(:,3); S.wo(:,3)]));
+  endif
   z = zeros (nlobes, 3);
   model = struct ("rho_d", [0 0 0], "Cxy", z, "Cz", z, "e", z + 1);
   models = cell (1, nlobes);

@@ -55,7 +55,7 @@ function repro_figures ()
                       "file", fullfile (fd, ["slice-" mat ".png"])));
     ## Fig. 4 / 5: in-plane fits (the paper's method) and hemisphere fits
     rd = fullfile (c.results, "render");
-    ref = exrread (fullfile (rd, [mat "-measured.exr"]));
+    ref = exrread (fullfile (rd, [mat "-measured-pov.exr"]));   # the fits' renderer and samples
     F = jsondecode (fileread (fullfile (rd, [mat "-fits.json"])));
     imgs = {ref; ref};
     psnr = zeros (2, nl);
@@ -74,8 +74,8 @@ function repro_figures ()
     done (plot_renders (imgs, [{"measured"}, lobe_names], psnr, "paper", paper,
                         "rows", {"in-plane fits", "hemisphere fits"},
                         "width", min (256, max (180, columns (ref))),   # the paper's 256: 1:1
-                        "title", sprintf ("%s: rt_render (measured), POV-Ray (fits), %d x %d, %d spp",
-                                          mat, columns (ref), rows (ref), c.spp),
+                        "title", sprintf ("%s: POV-Ray, %d x %d, anti-aliasing %d x %d",
+                                          mat, columns (ref), rows (ref), c.pov_aa, c.pov_aa),
                         "file", fullfile (fd, ["renders-" mat ".png"])));
     Fi = jsondecode (fileread (fullfile (c.results, "fit", [mat ".json"])));
     ## the step's record: trace(ch).time, .rmse per channel

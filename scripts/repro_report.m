@@ -38,14 +38,16 @@ function repro_report ()
   scene = repro_scene (c);
   L{end+1} = "";
   L{end+1} = sprintf (["Data used (above). Settings: scene `%s` (%s), %d x %d pixels (W x H), %d samples per " ...
-                       "pixel for the measured data (rt_render, jittered); fits rendered with POV-Ray " ...
-                       "(anti-aliasing %d x %d on edges) and, as a control, with rt_render on the same samples; " ...
+                       "pixel for rt_render (stratified, jittered); the measured data and the fits rendered with POV-Ray " ...
+                       "(anti-aliasing %d x %d plus the centre ray) and, as a control, with rt_render on the same samples; " ...
                        "grazing angles beyond %d degrees left out of the fits; %s run; %s, Octave %s, %d cores."],
                       scene.name, scene_desc (c), scene.width, scene.height, scene.spp, c.pov_aa, c.pov_aa,
                       c.max_angle, ifelse (c.quick, "QUICK (classroom)", "full"),
                       datestr (now (), "yyyy-mm-dd HH:MM"), OCTAVE_VERSION, nproc ());
   L{end+1} = "";
-  L{end+1} = "PSNR convention: 10 log10 (peak^2 / MSE), peak = the measured render's maximum, MSE over all pixels and channels of the linear HDR images.";
+  L{end+1} = ["PSNR convention: 10 log10 (peak^2 / MSE), peak = the measured render's maximum, MSE over all pixels and channels of the linear HDR images. " ...
+              "Each fit is compared with the measured data rendered by the same renderer with the same samples, so that sampling noise cancels " ...
+              "(the two measured renders, rt_render and POV-Ray, agree to the dB given below the table: the noise floor of a comparison across renderers)."];
   L{end+1} = "";
   ## --- PSNR table
   L{end+1} = "## PSNR of each fit's render against the measured-data render";
@@ -80,6 +82,7 @@ function repro_report ()
     s.psnr_inplane_rt = [R.inplane.psnr_rt];
     s.psnr_hemisphere_pov = [R.hemisphere.psnr_pov];
     s.renderers_psnr = [R.inplane.renderers_psnr];
+    s.renderers_psnr_measured = M.renderers_psnr;
     s.fit_rmse_inplane = mean (F.inplane.errors.inplane.rmse, 2)';
     s.fit_rel_rmse_inplane = mean (F.inplane.errors.inplane.rel_rmse, 2)';
     s.fit_rmse_hemisphere = mean (F.hemisphere.errors.hemisphere.rmse, 2)';
@@ -94,6 +97,11 @@ function repro_report ()
     sm.materials.(fieldname (mat)) = s;
     D.(fieldname (mat)) = struct ("F", F, "R", R, "P", P, "M", M);
   endfor
+  L{end+1} = "";
+  L{end+1} = ["The measured data rendered by rt_render and by POV-Ray agree to " ...
+              strjoin(cellfun (@(m) sprintf ("%.1f dB (%s)", sm.materials.(fieldname (m)).renderers_psnr_measured, m),
+                               c.materials, "uniformoutput", false), ", ") ...
+              ": PSNRs across renderers (the last column) cannot exceed that."];
   L{end+1} = "";
   for i = 1:numel (c.materials)
     L{end+1} = sprintf ("![measured and fitted renders, %s](figures/renders-%s.png)",
