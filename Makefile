@@ -99,7 +99,7 @@ octstep = POV_THREADS=$(pov_threads) $(OCT) --path $(CURDIR)/inst --path $(CURDI
 # ---- which project files each step may call: build/deps.mk, made from the
 # code by scripts/repro_deps.m (like a compiler's -MM), so that a change to a
 # file under inst/ re-runs only the steps that may call it
-STEP_SCRIPTS := repro_fit repro_render_measured repro_render_fits repro_spp repro_figures \
+STEP_SCRIPTS := repro_fit repro_render_measured repro_render_fits repro_spp repro_study repro_figures \
   repro_report db_sheet db_report
 NO_STEP_GOALS := all deps check bench dist install clean distclean
 ifneq ($(filter-out $(NO_STEP_GOALS),$(MAKECMDGOALS)),)
@@ -139,7 +139,13 @@ $(R)/render/%-fits.json: $(R)/fit/%.json $(R)/render/%-measured.json $(DEPS_repr
 $(R)/spp/%.json: $(R)/render/%-measured.json $(DEPS_repro_spp)
 	@$(call octstep,spp,$*)
 
-STEP_OUT := $(foreach m,$(MATS),$(R)/fit/$(m).json $(R)/render/$(m)-fits.json $(R)/spp/$(m).json)
+$(R)/study/%.json: $(R)/render/%-fits.json $(DEPS_repro_study)
+	@$(call octstep,study,$*)
+
+# the study: STUDY=1, or auto without a MESH
+STUDY_ON := $(if $(filter 1,$(STUDY)),1,$(if $(filter auto,$(STUDY)),$(if $(MESH),,1)))
+STEP_OUT := $(foreach m,$(MATS),$(R)/fit/$(m).json $(R)/render/$(m)-fits.json $(R)/spp/$(m).json \
+  $(if $(STUDY_ON),$(R)/study/$(m).json))
 
 $(R)/figures/spp.png: $(STEP_OUT) $(DEPS_repro_figures)
 	@$(call octrun,repro_figures ())

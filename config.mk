@@ -29,6 +29,18 @@ SPP_QUICK ?= 8
 # `make reproduce`: samples per pixel of the error-against-run-time study
 SPP_STUDY ?= 1 2 4 8 16 32 64
 SPP_STUDY_QUICK ?= 1 2 4
+# `make reproduce`: the study of which fit looks right (scripts/repro_study.m):
+# every table of STUDY_TABLES fitted with every weighting of STUDY_WEIGHTS (and
+# the scene table with image weights), each fit rendered in the scene and in a
+# second scene lit from STUDY_LIGHT.  STUDY: 1 on, 0 off, auto (on for the
+# built-in scenes, off with MESH: a mesh's renders take seconds each)
+STUDY ?= auto
+STUDY_TABLES ?= inplane hemisphere scene
+STUDY_WEIGHTS ?= plain cosine relative log
+STUDY_LIGHT ?= 1 0.3 0.6
+# samples per pixel of the scene table (merl_scene)
+STUDY_TABLE_SPP ?= 4
+STUDY_TABLE_SPP_QUICK ?= 1
 # POV-Ray anti-aliasing of the fits' renders
 POV_AA ?= 4
 POV_AA_QUICK ?= 2

@@ -46,6 +46,15 @@ function c = repro_config (file)
   c.pov_aa = number (get ("POV_AA"), "POV_AA");
   c.pov_threads = number (get ("POV_THREADS"), "POV_THREADS");
   c.torus = number (get ("TORUS"), "TORUS");
+  c.study = get ("STUDY");
+  if (! any (strcmp (c.study, {"0", "1", "auto"})))
+    error ("lafortune:badConfig", "repro_config: STUDY is '%s': expected 0, 1 or auto", c.study);
+  endif
+  c.study = strcmp (c.study, "1") || (strcmp (c.study, "auto") && isempty (c.mesh));
+  c.study_tables = strsplit (strtrim (get ("STUDY_TABLES")));
+  c.study_weights = strsplit (strtrim (get ("STUDY_WEIGHTS")));
+  c.study_light = number (get ("STUDY_LIGHT"), "STUDY_LIGHT");
+  c.study_table_spp = number (get ("STUDY_TABLE_SPP"), "STUDY_TABLE_SPP");
   c.fail_psnr = number (get ("FAIL_PSNR"), "FAIL_PSNR");
   c.fail_gain = number (get ("FAIL_GAIN"), "FAIL_GAIN");
   ## the paper's PSNR (256 x 512 image of the Happy Buddha, 128 rays per pixel)

@@ -19,6 +19,8 @@
 ## @item slice-MATERIAL.png (plot_slice): the theta_h-theta_d image at
 ## phi_d = 90 degrees of the data and the in-plane fits;
 ## @item fit-trace.png (plot_trace): in-plane fit error against run time;
+## @item study-MATERIAL.png: the study (STUDY): PSNR against lobes, one panel
+## per table, one line per weighting (plot_lobes);
 ## @item spp.png: render PSNR against run time, one panel per material (drawn
 ## here: a small plot).
 ## @end itemize
@@ -89,6 +91,37 @@ function repro_figures ()
                     "file", fullfile (fd, "fit-trace.png")));
   ## render PSNR against run time
   spp_figure (c, fullfile (fd, "spp.png"));
+  if (c.study)
+    for i = 1:numel (c.materials)
+      study_figure (c, c.materials{i}, fullfile (fd, ["study-" c.materials{i} ".png"]));
+    endfor
+  endif
+endfunction
+
+## the study: PSNR against lobes, one panel per table, one line per weighting
+function study_figure (c, mat, file)
+  R = jsondecode (fileread (fullfile (c.results, "study", [mat ".json"])));
+  M = R.methods;
+  tables = unique ({M.table}, "stable");
+  weights = unique ({M.weight}, "stable");
+  P = cell (1, numel (tables));
+  for t = 1:numel (tables)
+    P{t} = nan (numel (weights), max (c.lobes));
+    for m = M(strcmp ({M.table}, tables{t}))'
+      P{t}(strcmp (weights, m.weight),:) = m.psnr_a(:)';
+    endfor
+  endfor
+  paper = [];
+  key = strrep (mat, "-", "_");
+  if (isfield (c.paper_psnr, key))
+    paper = c.paper_psnr.(key);
+  endif
+  names = strrep (strrep (tables, "inplane", "in-plane table"), "hemisphere", "hemisphere table");
+  names = strrep (names, "scene", "scene table");
+  done (plot_lobes (P, weights, "paper", repmat ({paper}, 1, numel (tables)),
+                    "highlight", find (strcmp (weights, "image")), "panels", names,
+                    "title", sprintf ("%s: PSNR of each fit's POV-Ray render, by table and weighting", mat),
+                    "file", file));
 endfunction
 
 function done (hf)

@@ -110,6 +110,10 @@ function repro_report ()
   L{end+1} = "";
   L{end+1} = "Each fit's render has its difference image (|fit - measured| averaged over channels, white = 10% of the peak) in the corner.";
   L{end+1} = "";
+  ## --- the study
+  if (c.study)
+    L = study_section (c, L);
+  endif
   ## --- fits
   L{end+1} = "## Fits";
   L{end+1} = "";
@@ -226,4 +230,44 @@ function s = scene_desc (c)
   else
     s = c.mesh;
   endif
+endfunction
+
+## the study of tables and weightings against the picture
+function L = study_section (c, L)
+  L{end+1} = "## Which fit looks right: tables and weightings against the picture";
+  L{end+1} = "";
+  L{end+1} = ["Each material fitted from each table (in-plane: the paper's; hemisphere: every valid bin, weighted by its solid angle; " ...
+              "scene: the angle pairs the scene's pixels see, `merl_scene`) with each weighting of the residuals " ...
+              "(plain, cosine: times cos theta_i as Ngan et al. 2005, relative, log; image: each pair's share of the image times its irradiance squared, " ...
+              "the image's MSE). PSNR of each fit's POV-Ray render against the measured data's POV-Ray render, in the scene " ...
+              "(A) and in a second scene lit from another direction (B); `pred.` is the PSNR the scene table predicts for A " ...
+              "(`lafortune_error (model, S, \"psnr\")`). The paper's method is the first row."];
+  L{end+1} = "";
+  for i = 1:numel (c.materials)
+    mat = c.materials{i};
+    R = jsondecode (fileread (fullfile (c.results, "study", [mat ".json"])));
+    nl = max (c.lobes);
+    hdr = "| table | weighting |";
+    for k = 1:nl
+      hdr = [hdr sprintf(" A, %d | B, %d |", k, k)];
+    endfor
+    L{end+1} = sprintf ("**%s** (second scene lit from [%s]):", mat, num2str (R.light_b(:)', "%.2f "));
+    L{end+1} = "";
+    L{end+1} = [hdr " pred. A | fit (s) |"];
+    L{end+1} = ["|---|---|" repmat("---|---|", 1, nl) "---|---|"];
+    for m = R.methods(:)'
+      row = sprintf ("| %s | %s |", m.table, m.weight);
+      for k = 1:nl
+        row = [row sprintf(" %.2f | %.2f |", m.psnr_a(k), m.psnr_b(k))];
+      endfor
+      pr = "-";
+      if (all (isfinite (m.psnr_a_predicted)))
+        pr = strjoin (arrayfun (@(v) sprintf ("%.1f", v), m.psnr_a_predicted(:)', "uniformoutput", false), " / ");
+      endif
+      L{end+1} = [row sprintf(" %s | %.1f |", pr, m.fit_time)];
+    endfor
+    L{end+1} = "";
+    L{end+1} = sprintf ("![PSNR against lobes, %s](figures/study-%s.png)", mat, mat);
+    L{end+1} = "";
+  endfor
 endfunction

@@ -9,7 +9,8 @@
 ##
 ## Steps: @code{fit} (repro_fit), @code{render_measured}
 ## (repro_render_measured), @code{render_fits} (repro_render_fits),
-## @code{spp} (repro_spp) and @code{sheet} (db_sheet).  Every record has the
+## @code{spp} (repro_spp), @code{study} (repro_study) and @code{sheet}
+## (db_sheet).  Every record has the
 ## same head, then the step's own fields:
 ##
 ## @example
@@ -33,6 +34,7 @@ function out = repro_step (step, material, varargin)
                   "render_measured", {{"repro_render_measured", {}}},
                   "render_fits", {{"repro_render_fits", {"fit", "render_measured"}}},
                   "spp", {{"repro_spp", {"render_measured"}}},
+                  "study", {{"repro_study", {"render_measured", "render_fits"}}},
                   "sheet", {{"db_sheet", {"fit", "render_measured", "render_fits"}}});
   if (! isfield (steps, step))
     error ("lafortune:badStep", "repro_step: unknown step '%s': expected one of %s",
@@ -85,6 +87,8 @@ function f = output_file (c, step, material)
       f = fullfile (c.results, "render", [material "-fits.json"]);
     case "spp"
       f = fullfile (c.results, "spp", [material ".json"]);
+    case "study"
+      f = fullfile (c.results, "study", [material ".json"]);
     case "sheet"
       f = fullfile (c.results, "sheet", [material ".json"]);
     otherwise

@@ -1,0 +1,131 @@
+## Copyright (C) 2026 The lafortune developers
+## SPDX-License-Identifier: GPL-3.0-or-later
+
+## -*- texinfo -*-
+## @deftypefn {} {@var{R} =} repro_study (@var{material})
+## Study step of `make reproduce` (run by repro_step, which writes @var{R}
+## to RESULTS/study/MATERIAL.json): which fit looks right.  Every table of
+## STUDY_TABLES (@code{inplane}: the paper's plane of incidence;
+## @code{hemisphere}: every valid bin with its solid-angle weight;
+## @code{scene}: the angle pairs the scene's pixels see, @code{merl_scene},
+## from STUDY_TABLE_SPP samples per pixel) is fitted with every weighting of
+## STUDY_WEIGHTS, 1 to max (LOBES) lobes, and the scene table also with
+## @code{image} weights (each pair's share of the image times its
+## irradiance squared: the image's MSE, so the fit maximises the render's
+## PSNR).  Each fit is rendered with POV-Ray in the scene and in a second
+## scene lit from STUDY_LIGHT, and compared (PSNR) with the measured data
+## rendered there by POV-Ray with the same samples.  A model met before
+## (another column, or the main fit step's) is rendered once.
+##
+## @var{R}: @code{light_b} and @code{methods}, a struct array with
+## @code{table}, @code{weight}, @code{psnr_a}, @code{psnr_b} (1 x LOBES:
+## the scene, the second scene), @code{psnr_a_predicted} (from the scene
+## table, @code{lafortune_error} "psnr"), @code{fit_time} and @code{rmse}
+## (mean RGB, on the method's own table).
+## @end deftypefn
+function R = repro_study (material)
+  c = repro_config ();
+  warning ("off", "lafortune:notConverged", "local");
+  b = merl_read (fullfile (c.data_dir, [material ".binary"]));
+  sa = repro_scene (c);
+  sb = sa;
+  sb.light.direction = c.study_light(:)' / norm (c.study_light);
+  rd = fullfile (c.results, "render");
+  ref_a = exrread (fullfile (rd, [material "-measured-pov.exr"]));
+  printf ("reproduce: [%s] study: the measured data in the second scene (POV-Ray)\n", material);
+  fflush (stdout);
+  ref_b = pov_render (sb, b, "antialias", c.pov_aa, "threads", c.pov_threads);
+
+  ## the tables
+  ts = sa;
+  ts.spp = c.study_table_spp;
+  T = struct ();
+  for t = c.study_tables
+    switch (t{1})
+      case "inplane"
+        T.inplane = merl_plane (b, "max_angle", c.max_angle);
+      case "hemisphere"
+        T.hemisphere = merl_samples (b, "max_angle", c.max_angle);
+      case "scene"
+        T.scene = merl_scene (b, ts);
+      otherwise
+        error ("lafortune:badConfig",
+               "repro_study: unknown table '%s' in STUDY_TABLES: expected inplane, hemisphere or scene",
+               t{1});
+    endswitch
+  endfor
+  cols = {};
+  for t = c.study_tables
+    for w = c.study_weights
+      cols(end+1,:) = {t{1}, w{1}};
+    endfor
+    if (strcmp (t{1}, "scene"))
+      cols(end+1,:) = {"scene", "image"};
+    endif
+  endfor
+
+  ## renders shared between columns: the main step's, and every model met
+  seen = {};
+  done = zeros (0, 2);
+  F = jsondecode (fileread (fullfile (rd, [material "-fits.json"])));
+  for k = 1:numel (c.lobes)
+    f = fullfile (c.results, "fit", sprintf ("%s-inplane-%d.json", material, c.lobes(k)));
+    if (isfield (F, "inplane") && exist (f, "file"))
+      seen{end+1} = lafortune_import (f);
+      done(end+1,:) = [F.inplane(k).psnr_pov, NaN];
+    endif
+  endfor
+
+  nl = max (c.lobes);
+  M = struct ("table", {}, "weight", {}, "psnr_a", {}, "psnr_b", {},
+              "psnr_a_predicted", {}, "fit_time", {}, "rmse", {});
+  for i = 1:rows (cols)
+    [tn, wn] = cols{i,:};
+    S = T.(tn);
+    w = wn;
+    if (strcmp (wn, "image"))
+      S.weight = S.weight .* mean (S.irradiance .^ 2, 2);
+      w = "plain";
+    endif
+    printf ("reproduce: [%s] study: %s table, %s weights, 1..%d lobes\n", material, tn, wn, nl);
+    fflush (stdout);
+    t0 = tic ();
+    [~, info, models] = lafortune_fit (S, nl, "weight", w);
+    r = struct ("table", tn, "weight", wn, "psnr_a", nan (1, nl), "psnr_b", nan (1, nl),
+                "psnr_a_predicted", nan (1, nl), "fit_time", toc (t0),
+                "rmse", mean (info.history, 2)');
+    for k = 1:nl
+      m = models{k};
+      j = find (cellfun (@(s) same_model (s, m), seen), 1);
+      if (isempty (j))
+        seen{end+1} = m;
+        done(end+1,:) = NaN;
+        j = numel (seen);
+      endif
+      if (isnan (done(j,1)))
+        done(j,1) = img_psnr (ref_a, pov_render (sa, m, "antialias", c.pov_aa,
+                                                 "threads", c.pov_threads));
+      endif
+      if (isnan (done(j,2)))
+        done(j,2) = img_psnr (ref_b, pov_render (sb, m, "antialias", c.pov_aa,
+                                                 "threads", c.pov_threads));
+      endif
+      r.psnr_a(k) = done(j,1);
+      r.psnr_b(k) = done(j,2);
+      if (isfield (T, "scene"))
+        r.psnr_a_predicted(k) = lafortune_error (m, T.scene, "psnr");
+      endif
+    endfor
+    printf ("reproduce: [%s] study: %s/%s PSNR %s dB (scene), %s dB (second scene)\n", material,
+            tn, wn, mat2str (r.psnr_a, 4), mat2str (r.psnr_b, 4));
+    M(end+1) = r;
+  endfor
+  R = struct ("material", material, "light_b", sb.light.direction, "methods", M);
+endfunction
+
+## the same parameters (to 1e-12 relative): one render serves both
+function tf = same_model (a, b)
+  tf = isequal (size (a.e), size (b.e)) ...
+       && all (abs ([a.rho_d(:); a.Cxy(:); a.Cz(:); a.e(:)] - [b.rho_d(:); b.Cxy(:); b.Cz(:); b.e(:)])
+               <= 1e-12 * max (1, abs ([a.rho_d(:); a.Cxy(:); a.Cz(:); a.e(:)])));
+endfunction
