@@ -130,7 +130,7 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
   if (nargin < 2)
     print_usage ();
   endif
-  S = check_samples (S);
+  [S, wt] = check_samples (S);
   if (! (isnumeric (nlobes) && isscalar (nlobes) && nlobes == fix (nlobes)
          && nlobes >= 1 && nlobes <= 8))
     error ("lafortune:badLobes", "lafortune_fit: NLOBES must be an integer from 1 to 8, got %s",
@@ -144,16 +144,29 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
   opt = check_opts (opt, nlobes);
   pkg_load_optim ();
 
-  ## a sample of weight 0 is left out
-  keep = S.weight > 0;
+  N = rows (S.wi);
+  xall = [S.wi(:,1) .* S.wo(:,1) + S.wi(:,2) .* S.wo(:,2), S.wi(:,3) .* S.wo(:,3)];
+  ## the metrics as lafortune_error defines them (metric_spec), on all samples
+  ## in the data's units: what info reports
+  [rep, names] = report_specs (S, opt.weight);
+  ## a sample of weight 0 is left out of the fit; the data are divided by
+  ## their largest magnitude per channel, so that nothing in the fit depends
+  ## on the data's units
+  keep = wt > 0;
+  Sf = rows_of (S, keep);
+  x = xall(keep,:);
+  sc = max (abs (Sf.rgb), [], 1);
+  sc(! (sc > 0)) = 1;
+  Ss = Sf;
+  Ss.rgb = Sf.rgb ./ sc;
+  fspec = metric_spec (opt.weight, Ss, "lafortune_fit", rep.plain.delta ./ sc);
+  pspec = rep.plain;
   if (! all (keep))
-    S.wi = S.wi(keep,:); S.wo = S.wo(keep,:); S.rgb = S.rgb(keep,:); S.weight = S.weight(keep);
+    pspec.w = pspec.w(keep,:);
+    pspec.ty = pspec.ty(keep,:);
   endif
-  x = [S.wi(:,1) .* S.wo(:,1) + S.wi(:,2) .* S.wo(:,2), S.wi(:,3) .* S.wo(:,3)];
-  cosi = S.wi(:,3);
-  wt = S.weight;
-  [j, xc, jr, xr, info_reduce] = groups (x, wt, opt);
-  G = fit_guard (min ([S.wi(:,3); S.wo(:,3)]));
+  [j, xc, jr, xr, info_reduce] = groups (x, wt(keep), opt);
+  G = fit_guard (min ([Sf.wi(:,3); Sf.wo(:,3)]));
   z = zeros (nlobes, 3);
   model = struct ("rho_d", [0 0 0], "Cxy", z, "Cz", z, "e", z + 1);
   models = cell (1, nlobes);
@@ -161,71 +174,148 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
     models{k} = struct ("rho_d", [0 0 0], "Cxy", zeros (k, 3), "Cz", zeros (k, 3), "e", ones (k, 3));
   endfor
   nan3 = nan (1, 3);
-  info = struct ("nlobes", nlobes, "weight", opt.weight, "n", rows (x),
+  info = struct ("nlobes", nlobes, "weight", opt.weight, "n", N,
                  "groups", rows (xc), "reduce", info_reduce,
                  "rmse", nan3, "rel_rmse", nan3, "log_rmse", nan3, "cos_rmse", nan3,
+                 "error", nan3,
                  "iterations", zeros (1, 3), "full_iterations", zeros (1, 3),
                  "rejected", zeros (1, 3), "converged", true (1, 3), "time", zeros (1, 3),
                  "trace", {cell(1, 3)}, "history", nan (nlobes, 3),
                  "lobe_time", nan (nlobes, 3));
+  ## per metric, the 1 x 3 sums of squares of the fitted model on all samples
+  ## (a channel not fitted has the zero model); hss: the plain sums per lobe count
+  zero = zeros (N, 1);
+  for i = 1:numel (names)
+    ss.(names{i}) = [rep.(names{i}).ss(zero, 1), rep.(names{i}).ss(zero, 2), rep.(names{i}).ss(zero, 3)];
+  endfor
+  ss0 = ss.plain;
+  hss = nan (nlobes, 3);
+  traces = cell (1, 3);
   for c = opt.channels(:)'
     t0 = tic ();
-    y = S.rgb(:,c);
+    y = Ss.rgb(:,c);
     if (any (y < 0) && ! any (y > 0))
       warning ("lafortune:negativeData",
                "lafortune_fit: channel %d has no positive value (a BRDF is non-negative); its fit is the zero model",
                c);
     endif
-    D = fit_data (x, y, wt, cosi, opt.weight, j, xc);
+    D = fit_data (fspec, c, j, xc, y);
+    D.P = fit_data (pspec, c, j, xc, Sf.rgb(:,c));
+    D.s = sc(c);
     if (isequal (jr, j))
       R = D;
     else
-      R = fit_data (x, y, wt, cosi, opt.weight, jr, xr);
+      R = fit_data (fspec, c, jr, xr, y);
     endif
     if (! isempty (opt.start))
-      p0 = fit_unscale (model_params (opt.start, c), 1 / D.s);
+      p0 = fit_unscale (model_params (opt.start, c), 1 / sc(c));
       ch = fit_channel (D, R, nlobes, opt, G, p0);
     elseif (strcmp (opt.init, "plain"))
       ## the paper's naive start, in the data's units
       p0 = [0.1; repmat([-1; 1; 0], nlobes, 1)];
       p0(4:3:end) = 10 * (1:nlobes);
-      ch = fit_channel (D, R, nlobes, opt, G, fit_unscale (p0, 1 / D.s));
+      ch = fit_channel (D, R, nlobes, opt, G, fit_unscale (p0, 1 / sc(c)));
     else
       ch = fit_channel (D, R, nlobes, opt, G);
     endif
-    p = fit_unscale (ch.p, D.s);
+    p = fit_unscale (ch.p, sc(c));
     model = set_params (model, c, p);
     for k = 1:numel (ch.ps)
       if (! isempty (ch.ps{k}) && k < nlobes)
-        pk = fit_unscale (ch.ps{k}, D.s);
+        pk = fit_unscale (ch.ps{k}, sc(c));
         models{k} = set_params (models{k}, c, pk);
-        info.history(k,c) = fit_metrics (lafortune_core (pk, x(:,1), x(:,2)), y, cosi, wt).rmse;
+        hss(k,c) = rep.plain.ss (lafortune_core (pk, xall(:,1), xall(:,2)), c);
       endif
     endfor
-    e = fit_metrics (lafortune_core (p, x(:,1), x(:,2)), y, cosi, wt);
-    info.history(nlobes,c) = e.rmse;
+    f = lafortune_core (p, xall(:,1), xall(:,2));
+    for i = 1:numel (names)
+      ss.(names{i})(c) = rep.(names{i}).ss (f, c);
+    endfor
+    hss(nlobes,c) = ss.plain(c);
     models{nlobes} = set_params (models{nlobes}, c, p);
     info.time(c) = toc (t0);
-    info.rmse(c) = e.rmse; info.rel_rmse(c) = e.rel_rmse;
-    info.log_rmse(c) = e.log_rmse; info.cos_rmse(c) = e.cos_rmse;
     info.iterations(c) = ch.iter;
     info.full_iterations(c) = ch.full_iter;
     info.rejected(c) = ch.rejected;
     info.converged(c) = ch.cvg;
     info.lobe_time(:,c) = ch.ktime(:);
-    info.trace{c} = best_trace (ch.trace, info.time(c), e.rmse, strcmp (info_reduce, "exact"));
+    traces{c} = ch.trace;
     if (! ch.cvg)
       warning ("lafortune:notConverged",
                "lafortune_fit: channel %d (%d lobes) did not converge in %d iterations; the parameters are finite but may not be optimal",
                c, nlobes, opt.max_iter);
     endif
   endfor
+  ## the reported errors: lafortune_error's values (metric_spec's finish)
+  fitted = false (1, 3);
+  fitted(opt.channels) = true;
+  per = @(e) ifelse_nan (e, fitted);
+  info.rmse = per (rep.plain.finish (ss.plain));
+  rms0 = rep.plain.finish (ss0);
+  info.rel_rmse = per (info.rmse ./ max (rms0, realmin) .* (info.rmse > 0));
+  info.log_rmse = per (rep.log.finish (ss.log));
+  if (isfield (rep, "cosine"))
+    info.cos_rmse = per (rep.cosine.finish (ss.cosine));
+  endif
+  if (strcmp (opt.weight, "psnr"))
+    info.error = rep.psnr.finish (ss.psnr);
+  else
+    info.error = per (rep.(opt.weight).finish (ss.(opt.weight)));
+  endif
+  for k = 1:nlobes
+    info.history(k,:) = per (rep.plain.finish (hss(k,:)));
+  endfor
+  for c = opt.channels(:)'
+    info.trace{c} = best_trace (traces{c}, info.time(c), info.rmse(c), strcmp (info_reduce, "exact"));
+  endfor
   if (! strcmp (opt.init, "grow") || ! isempty (opt.start))
     models = {model};
   endif
+  ## the table's name goes with the models (exports carry it)
+  if (isfield (S, "name") && ischar (S.name) && ! isempty (S.name))
+    model.name = S.name;
+    for k = 1:numel (models)
+      models{k}.name = S.name;
+    endfor
+  endif
 endfunction
 
-function S = check_samples (S)
+## E with NaN where FITTED is false (channels not fitted)
+function e = ifelse_nan (e, fitted)
+  e(! fitted) = NaN;
+endfunction
+
+## The specs of the reported metrics on the table S (data units): plain,
+## log, cosine (unless S.weight already is Ngan's cosine measure) and the
+## fit's own; NAMES lists them.  Delta is computed once.
+function [rep, names] = report_specs (S, weight)
+  rep.plain = metric_spec ("plain", S, "lafortune_fit");
+  names = {"plain", "log", weight};
+  if (! (isfield (S, "measure") && strcmp (S.measure, "cosine")))
+    names{end+1} = "cosine";
+  endif
+  names = unique (names);
+  for i = 1:numel (names)
+    if (! isfield (rep, names{i}))
+      rep.(names{i}) = metric_spec (names{i}, S, "lafortune_fit", rep.plain.delta);
+    endif
+  endfor
+endfunction
+
+## The rows K of the per-sample fields of the table S
+function S = rows_of (S, k)
+  if (all (k))
+    return;
+  endif
+  n = numel (k);
+  for f = {"wi", "wo", "rgb", "weight", "irradiance"}
+    if (isfield (S, f{1}) && rows (S.(f{1})) == n)
+      S.(f{1}) = S.(f{1})(k,:);
+    endif
+  endfor
+endfunction
+
+function [S, wt] = check_samples (S)
   if (! isstruct (S) || ! isscalar (S) || ! all (isfield (S, {"wi", "wo", "rgb"})))
     error ("lafortune:badSamples",
            "lafortune_fit: S must be a struct with fields wi, wo, rgb (see merl_plane)");
@@ -251,13 +341,15 @@ function S = check_samples (S)
              "lafortune_fit: S.weight must be N x 1 (N = %d), finite, >= 0 and not all zero", n);
     endif
     S.weight = double (w(:));
+    wt = S.weight;
   else
-    S.weight = ones (n, 1);
+    S = rmfield (S, intersect ({"weight"}, fieldnames (S)));
+    wt = ones (n, 1);
   endif
 endfunction
 
 function opt = check_opts (opt, nlobes)
-  weights = {"plain", "cosine", "relative", "log"};
+  weights = metric_spec ();
   if (! ischar (opt.weight) || ! any (strcmp (opt.weight, weights)))
     error ("lafortune:badOption", "lafortune_fit: WEIGHT must be one of %s",
            strjoin (weights, ", "));
