@@ -11,8 +11,9 @@
 ##
 ## @var{S} is a struct with fields @code{wi}, @code{wo} (N x 3 unit
 ## directions, local frame) and @code{rgb} (N x 3), such as
-## @code{merl_plane} (the paper's in-plane table) or @code{merl_samples}
-## (the whole hemisphere) return, and optionally @code{weight} (N x 1,
+## @code{merl_plane} (the paper's in-plane table), @code{merl_samples}
+## (the whole hemisphere) or @code{merl_scene} (what a scene's pixels see)
+## return, and optionally @code{weight} (N x 1,
 ## finite, >= 0, not all 0): each sample's weight in the least-squares
 ## objective and in the reported errors (for example a quadrature weight, so
 ## that the objective is an integral over directions); a sample of weight 0
@@ -54,11 +55,19 @@
 ## Options:
 ## @table @code
 ## @item "weight"
-## residual weighting: @code{"plain"} (default, as the paper),
-## @code{"cosine"} (residual times cos theta_i, as Ngan et al. 2005),
-## @code{"relative"} (residual divided by max (y, delta)) or @code{"log"}
-## (log (f + delta) - log (y + delta)); delta = 0.01 times the (weighted)
-## median of the positive data.
+## the metric the fit minimises, by the names of @code{lafortune_error},
+## which reports the same sums (both take them from one definition):
+## @code{"plain"} (default, as the paper: the rms error), @code{"cosine"}
+## (residual times cos theta_i, as Ngan et al. 2005), @code{"relative"}
+## (residual divided by max (y, delta)), @code{"log"} (log (f + delta) - log
+## (y + delta), after Loew et al. 2012), @code{"cuberoot"} ((f + delta)^(1/3)
+## - (y + delta)^(1/3), after Fores et al. 2012), delta = 0.01 times the
+## (weighted) median of the positive data, and for a scene table from
+## @code{merl_scene} (@code{S.kind} = @code{"scene"}) @code{"psnr"}: weights
+## @code{S.weight .* S.irradiance .^ 2}, so that the fit minimises the
+## image's MSE, that is maximises the render's PSNR.  Every metric is a
+## weighted sum of squares with one transform per channel, so merging equal
+## (a, c) stays exact with per-sample weights.
 ## @item "max_iter"
 ## Levenberg-Marquardt iterations per run (default 100; leasqr's own
 ## default is only 20).
@@ -92,9 +101,13 @@
 ##
 ## @var{info} holds @code{n} (samples), @code{groups} (how many the fit
 ## ran on) and @code{reduce} (@code{"exact"} or @code{"grid N"}), and per
-## channel (1 x 3 arrays, each a mean weighted by @code{S.weight}):
-## @code{rmse}, @code{rel_rmse} (rmse / rms of the data), @code{log_rmse},
-## @code{cos_rmse} (residual times cos theta_i), @code{iterations},
+## channel (1 x 3 arrays, each a mean weighted by @code{S.weight}, on all
+## samples, equal to @code{lafortune_error}'s values):
+## @code{rmse} ("plain"), @code{rel_rmse} (rmse / rms of the data),
+## @code{log_rmse} ("log"), @code{cos_rmse} ("cosine"; NaN when
+## @code{S.measure} is already Ngan's cosine measure), @code{error} (the
+## fitted metric, @code{"weight"}; a scalar, in dB, for @code{"psnr"}),
+## @code{iterations},
 ## @code{full_iterations} (those on all groups), @code{rejected},
 ## @code{converged} (leasqr's flag), @code{time} (seconds), and
 ## @code{trace}, a 1 x 3 cell of K x 2 arrays [elapsed seconds, rmse]: the
@@ -108,7 +121,10 @@
 ## after each lobe count, and @code{info.lobe_time} (nlobes x 3) the seconds
 ## from the channel's start until that lobe count was done (growing mode).
 ## @var{models} is a cell with the fitted models for 1 .. @var{nlobes} lobes
-## (growing mode).
+## (growing mode).  When @var{S} has a non-empty @code{name} (as
+## @code{merl_plane}, @code{merl_samples} and @code{merl_scene} tables do),
+## @var{model} and every model in @var{models} get it as their @code{name},
+## so that exports carry the material's name.
 ##
 ## A channel that did not converge within @code{max_iter} raises the
 ## warning @code{lafortune:notConverged}; its parameters are still finite.
@@ -122,6 +138,9 @@
 ## lafortune_export (all@{2@}, "gmp-2lobe.json", "json");
 ## H = merl_samples (brdf);                     # every valid bin
 ## m3 = lafortune_fit (H, 3);                   # on (a, c) cells, seconds
+## m3l = lafortune_fit (H, 3, "weight", "log");  # another metric
+## sc = scene_make ("sphere", "size", [64 64], "spp", 1);
+## ms = lafortune_fit (merl_scene (brdf, sc), 2, "weight", "psnr");  # the render's best
 ## @end group
 ## @end example
 ## @seealso{merl_plane, merl_samples, lafortune_eval, lafortune_export}
