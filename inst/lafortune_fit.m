@@ -42,8 +42,11 @@
 ## a coarse grid of about @code{"screen_samples"} groups (a candidate that
 ## is non-negligible on fewer than 0.2% of them is skipped); the best
 ## candidate of each direction family is a start, best family first.  The
-## first start is refined by Levenberg-Marquardt, on the coarse grid first
-## when that is much smaller than the data, then on all groups.  A result
+## first start is refined by Levenberg-Marquardt: a warm-up on the coarse
+## grid (to a looser tolerance, 1e-4) when that is much smaller than the
+## data and an iteration on all groups is costly (groups times parameters^2
+## above 200000: on the in-plane table from 2 lobes on), then a run on all
+## groups.  A result
 ## that exceeds 10 times the data's maximum anywhere in the data's angular
 ## range (checked on a 0.5-degree in-plane grid, where every lobe's base
 ## reaches its extremes) is rejected: such a lobe fits a few samples and
@@ -362,7 +365,9 @@ function [S, wt] = check_samples (S)
     S.weight = double (w(:));
     wt = S.weight;
   else
-    S = rmfield (S, intersect ({"weight"}, fieldnames (S)));
+    if (isfield (S, "weight"))
+      S = rmfield (S, "weight");
+    endif
     wt = ones (n, 1);
   endif
 endfunction

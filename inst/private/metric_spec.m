@@ -206,7 +206,10 @@ endfunction
 ## (equal weights: the ordinary median)
 function m = wmedian (y, s)
   if (all (s == s(1)))
-    m = median (y);
+    ## equal weights: the ordinary median, in linear time
+    n = numel (y);
+    v = nth_element (y, floor ((n + 1) / 2):ceil ((n + 1) / 2));
+    m = (v(1) + v(end)) / 2;
     return;
   endif
   [y, o] = sort (y);
