@@ -196,7 +196,7 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
     models{k} = struct ("rho_d", [0 0 0], "Cxy", zeros (k, 3), "Cz", zeros (k, 3), "e", ones (k, 3));
   endfor
   nan3 = nan (1, 3);
-  info = struct ("nlobes", nlobes, "weight", opt.weight, "n", N,
+  info = struct ("nlobes", nlobes, "weight", opt.weight, "n", rows (x),
                  "groups", rows (xc), "reduce", info_reduce,
                  "rmse", nan3, "rel_rmse", nan3, "log_rmse", nan3, "cos_rmse", nan3,
                  "error", nan3,
@@ -271,22 +271,7 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
   ## the reported errors: lafortune_error's values (metric_spec's finish)
   fitted = false (1, 3);
   fitted(opt.channels) = true;
-  per = @(e) ifelse_nan (e, fitted);
-  info.rmse = per (rep.plain.finish (ss.plain));
-  rms0 = rep.plain.finish (ss0);
-  info.rel_rmse = per (info.rmse ./ max (rms0, realmin) .* (info.rmse > 0));
-  info.log_rmse = per (rep.log.finish (ss.log));
-  if (isfield (rep, "cosine"))
-    info.cos_rmse = per (rep.cosine.finish (ss.cosine));
-  endif
-  if (strcmp (opt.weight, "psnr"))
-    info.error = rep.psnr.finish (ss.psnr);
-  else
-    info.error = per (rep.(opt.weight).finish (ss.(opt.weight)));
-  endif
-  for k = 1:nlobes
-    info.history(k,:) = per (rep.plain.finish (hss(k,:)));
-  endfor
+  info = report_errors (info, rep, ss, ss0, hss, fitted, opt.weight);
   for c = opt.channels(:)'
     info.trace{c} = best_trace (traces{c}, info.time(c), info.rmse(c), strcmp (info_reduce, "exact"));
   endfor
@@ -300,6 +285,28 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
       models{k}.name = S.name;
     endfor
   endif
+endfunction
+
+## INFO's errors from the 1 x 3 sums of squares SS.(metric) of the fit, SS0
+## (plain, of the zero model) and HSS (plain, per lobe count) with the specs
+## REP; channels not FITTED get NaN
+function info = report_errors (info, rep, ss, ss0, hss, fitted, weight)
+  per = @(e) ifelse_nan (e, fitted);
+  info.rmse = per (rep.plain.finish (ss.plain));
+  rms0 = rep.plain.finish (ss0);
+  info.rel_rmse = per (info.rmse ./ max (rms0, realmin) .* (info.rmse > 0));
+  info.log_rmse = per (rep.log.finish (ss.log));
+  if (isfield (rep, "cosine"))
+    info.cos_rmse = per (rep.cosine.finish (ss.cosine));
+  endif
+  if (strcmp (weight, "psnr"))
+    info.error = rep.psnr.finish (ss.psnr);
+  else
+    info.error = per (rep.(weight).finish (ss.(weight)));
+  endif
+  for k = 1:rows (hss)
+    info.history(k,:) = per (rep.plain.finish (hss(k,:)));
+  endfor
 endfunction
 
 ## E with NaN where FITTED is false (channels not fitted)
