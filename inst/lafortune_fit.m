@@ -189,7 +189,11 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
     pspec.ty = pspec.ty(keep,:);
   endif
   [j, xc, xr, info_reduce, jg] = groups (x, wt(keep), opt);
-  G = fit_guard (min ([Sf.wi(:,3); Sf.wo(:,3)]));
+  if (isfield (S, "kind") && strcmp (S.kind, "scene"))
+    G.x = x;          # a scene table: the angle pairs the scene reaches, densely
+  else
+    G = fit_guard (min ([Sf.wi(:,3); Sf.wo(:,3)]));
+  endif
   z = zeros (nlobes, 3);
   model = struct ("rho_d", [0 0 0], "Cxy", z, "Cz", z, "e", z + 1);
   models = cell (1, nlobes);
