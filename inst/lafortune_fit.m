@@ -50,7 +50,7 @@
 ## groups.  A result
 ## that exceeds 10 times the data's maximum anywhere in the data's angular
 ## range (checked on a 0.5-degree in-plane grid, where every lobe's base
-## reaches its extremes) is rejected: such a lobe fits a few samples and
+## reaches its extremes; for a scene table on its own angle pairs) is rejected: such a lobe fits a few samples and
 ## explodes between them or toward grazing angles; the next start is tried
 ## instead (@code{info.rejected} counts them).  As a start that adds a zero
 ## lobe reproduces the k-lobe error, the error never increases with more
