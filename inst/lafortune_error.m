@@ -102,7 +102,7 @@ function [e, info] = lafortune_error (model, S, metric = "plain")
   f = lafortune_eval (model, wi, wo);
   ss = zeros (1, 3);
   for c = 1:3
-    ss(c) = sum (spec.w(:,c) .* (spec.t (f(:,c), c) - spec.ty(:,c)) .^ 2);
+    ss(c) = spec.ss (f(:,c), c);
   endfor
   e = spec.finish (ss);
   info = struct ("metric", metric, "delta", spec.delta, "degree", spec.degree,

@@ -11,8 +11,9 @@
 ##
 ## @var{S} is a struct with fields @code{wi}, @code{wo} (N x 3 unit
 ## directions, local frame) and @code{rgb} (N x 3), such as
-## @code{merl_plane} (the paper's in-plane table) or @code{merl_samples}
-## (the whole hemisphere) return, and optionally @code{weight} (N x 1,
+## @code{merl_plane} (the paper's in-plane table), @code{merl_samples}
+## (the whole hemisphere) or @code{merl_scene} (what a scene's pixels see)
+## return, and optionally @code{weight} (N x 1,
 ## finite, >= 0, not all 0): each sample's weight in the least-squares
 ## objective and in the reported errors (for example a quadrature weight, so
 ## that the objective is an integral over directions); a sample of weight 0
@@ -38,14 +39,19 @@
 ## k-lobe solution plus one new lobe.  Candidate lobes (forward lobes from
 ## steep to flat, retro-reflective, near-normal; exponents 1 to 1e5) get
 ## their best amplitude, with a change of rho_d, by linear least squares on
-## a coarse grid of about @code{"screen_samples"} groups (a candidate that
+## a coarse grid of about @code{"screen_samples"} cells, each represented by
+## its group nearest the cell's centre with the cell's weight (a candidate that
 ## is non-negligible on fewer than 0.2% of them is skipped); the best
 ## candidate of each direction family is a start, best family first.  The
-## first start is refined by Levenberg-Marquardt, on the coarse grid first
-## when that is much smaller than the data, then on all groups.  A result
+## first start is refined by Levenberg-Marquardt: a warm-up on the coarse
+## grid (to a looser tolerance, 1e-4) when that is much smaller than the
+## data and an iteration on all groups is costly (groups times parameters^2
+## above 200000: on the in-plane table from 2 lobes on), then a run on all
+## groups.  A result
 ## that exceeds 10 times the data's maximum anywhere in the data's angular
 ## range (checked on a 0.5-degree in-plane grid, where every lobe's base
-## reaches its extremes) is rejected: such a lobe fits a few samples and
+## reaches its extremes; for a scene table on every pair a normal can make
+## at its angles between light and viewer, up to 89.5 degrees) is rejected: such a lobe fits a few samples and
 ## explodes between them or toward grazing angles; the next start is tried
 ## instead (@code{info.rejected} counts them).  As a start that adds a zero
 ## lobe reproduces the k-lobe error, the error never increases with more
@@ -54,11 +60,19 @@
 ## Options:
 ## @table @code
 ## @item "weight"
-## residual weighting: @code{"plain"} (default, as the paper),
-## @code{"cosine"} (residual times cos theta_i, as Ngan et al. 2005),
-## @code{"relative"} (residual divided by max (y, delta)) or @code{"log"}
-## (log (f + delta) - log (y + delta)); delta = 0.01 times the (weighted)
-## median of the positive data.
+## the metric the fit minimises, by the names of @code{lafortune_error},
+## which reports the same sums (both take them from one definition):
+## @code{"plain"} (default, as the paper: the rms error), @code{"cosine"}
+## (residual times cos theta_i, as Ngan et al. 2005), @code{"relative"}
+## (residual divided by max (y, delta)), @code{"log"} (log (f + delta) - log
+## (y + delta), after Loew et al. 2012), @code{"cuberoot"} ((f + delta)^(1/3)
+## - (y + delta)^(1/3), after Fores et al. 2012), delta = 0.01 times the
+## (weighted) median of the positive data, and for a scene table from
+## @code{merl_scene} (@code{S.kind} = @code{"scene"}) @code{"psnr"}: weights
+## @code{S.weight .* S.irradiance .^ 2}, so that the fit minimises the
+## image's MSE, that is maximises the render's PSNR.  Every metric is a
+## weighted sum of squares with one transform per channel, so merging equal
+## (a, c) stays exact with per-sample weights.
 ## @item "max_iter"
 ## Levenberg-Marquardt iterations per run (default 100; leasqr's own
 ## default is only 20).
@@ -92,9 +106,13 @@
 ##
 ## @var{info} holds @code{n} (samples), @code{groups} (how many the fit
 ## ran on) and @code{reduce} (@code{"exact"} or @code{"grid N"}), and per
-## channel (1 x 3 arrays, each a mean weighted by @code{S.weight}):
-## @code{rmse}, @code{rel_rmse} (rmse / rms of the data), @code{log_rmse},
-## @code{cos_rmse} (residual times cos theta_i), @code{iterations},
+## channel (1 x 3 arrays, each a mean weighted by @code{S.weight}, on all
+## samples, equal to @code{lafortune_error}'s values):
+## @code{rmse} ("plain"), @code{rel_rmse} (rmse / rms of the data),
+## @code{log_rmse} ("log"), @code{cos_rmse} ("cosine"; NaN when
+## @code{S.measure} is already Ngan's cosine measure), @code{error} (the
+## fitted metric, @code{"weight"}; a scalar, in dB, for @code{"psnr"}),
+## @code{iterations},
 ## @code{full_iterations} (those on all groups), @code{rejected},
 ## @code{converged} (leasqr's flag), @code{time} (seconds), and
 ## @code{trace}, a 1 x 3 cell of K x 2 arrays [elapsed seconds, rmse]: the
@@ -108,7 +126,10 @@
 ## after each lobe count, and @code{info.lobe_time} (nlobes x 3) the seconds
 ## from the channel's start until that lobe count was done (growing mode).
 ## @var{models} is a cell with the fitted models for 1 .. @var{nlobes} lobes
-## (growing mode).
+## (growing mode).  When @var{S} has a non-empty @code{name} (as
+## @code{merl_plane}, @code{merl_samples} and @code{merl_scene} tables do),
+## @var{model} and every model in @var{models} get it as their @code{name},
+## so that exports carry the material's name.
 ##
 ## A channel that did not converge within @code{max_iter} raises the
 ## warning @code{lafortune:notConverged}; its parameters are still finite.
@@ -122,6 +143,9 @@
 ## lafortune_export (all@{2@}, "gmp-2lobe.json", "json");
 ## H = merl_samples (brdf);                     # every valid bin
 ## m3 = lafortune_fit (H, 3);                   # on (a, c) cells, seconds
+## m3l = lafortune_fit (H, 3, "weight", "log");  # another metric
+## sc = scene_make ("sphere", "size", [64 64], "spp", 1);
+## ms = lafortune_fit (merl_scene (brdf, sc), 2, "weight", "psnr");  # the render's best
 ## @end group
 ## @end example
 ## @seealso{merl_plane, merl_samples, lafortune_eval, lafortune_export}
@@ -130,7 +154,8 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
   if (nargin < 2)
     print_usage ();
   endif
-  S = check_samples (S);
+  S = with_prior (S, varargin);
+  [S, wt] = check_samples (S);
   if (! (isnumeric (nlobes) && isscalar (nlobes) && nlobes == fix (nlobes)
          && nlobes >= 1 && nlobes <= 8))
     error ("lafortune:badLobes", "lafortune_fit: NLOBES must be an integer from 1 to 8, got %s",
@@ -144,19 +169,34 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
   opt = check_opts (opt, nlobes);
   pkg_load_optim ();
 
-  ## a sample of weight 0 is left out
-  keep = S.weight > 0;
+  N = rows (S.wi);
+  xall = [S.wi(:,1) .* S.wo(:,1) + S.wi(:,2) .* S.wo(:,2), S.wi(:,3) .* S.wo(:,3)];
+  ## the metrics as lafortune_error defines them (metric_spec), on all samples
+  ## in the data's units: what info reports
+  [rep, names] = report_specs (S, opt.weight);
+  ## a sample of weight 0 is left out of the fit; the data are divided by
+  ## their largest magnitude per channel, so that nothing in the fit depends
+  ## on the data's units
+  keep = wt > 0;
+  Sf = rows_of (S, keep);
+  x = xall(keep,:);
+  sc = max (abs (Sf.rgb), [], 1);
+  sc(! (sc > 0)) = 1;
+  Ss = Sf;
+  Ss.rgb = Sf.rgb ./ sc;
+  fspec = metric_spec (opt.weight, Ss, "lafortune_fit", rep.plain.delta ./ sc);
+  pspec = rep.plain;
   if (! all (keep))
-    S.wi = S.wi(keep,:); S.wo = S.wo(keep,:); S.rgb = S.rgb(keep,:); S.weight = S.weight(keep);
+    pspec.w = pspec.w(keep,:);
+    pspec.ty = pspec.ty(keep,:);
   endif
-  x = [S.wi(:,1) .* S.wo(:,1) + S.wi(:,2) .* S.wo(:,2), S.wi(:,3) .* S.wo(:,3)];
-  cosi = S.wi(:,3);
-  wt = S.weight;
-  [j, xc, jr, xr, info_reduce] = groups (x, wt, opt);
+  [j, xc, xr, info_reduce, jg] = groups (x, wt(keep), opt);
   if (isfield (S, "kind") && strcmp (S.kind, "scene"))
-    G.x = x;          # a scene table: the angle pairs the scene reaches, densely
+    ## a scene table: every pair a normal can make at its angles between
+    ## light and viewer (the table itself has gaps between its pixels)
+    G = fit_guard ("scene", x, sum (Sf.wi .* Sf.wo, 2));
   else
-    G = fit_guard (min ([S.wi(:,3); S.wo(:,3)]));
+    G = fit_guard (min ([Sf.wi(:,3); Sf.wo(:,3)]));
   endif
   z = zeros (nlobes, 3);
   model = struct ("rho_d", [0 0 0], "Cxy", z, "Cz", z, "e", z + 1);
@@ -168,68 +208,194 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
   info = struct ("nlobes", nlobes, "weight", opt.weight, "n", rows (x),
                  "groups", rows (xc), "reduce", info_reduce,
                  "rmse", nan3, "rel_rmse", nan3, "log_rmse", nan3, "cos_rmse", nan3,
+                 "error", nan3,
                  "iterations", zeros (1, 3), "full_iterations", zeros (1, 3),
                  "rejected", zeros (1, 3), "converged", true (1, 3), "time", zeros (1, 3),
                  "trace", {cell(1, 3)}, "history", nan (nlobes, 3),
                  "lobe_time", nan (nlobes, 3));
+  ## per metric, the 1 x 3 sums of squares of the fitted model on all samples
+  ## (a channel not fitted has the zero model); hss: the plain sums per lobe count
+  zero = zeros (N, 1);
+  for i = 1:numel (names)
+    ss.(names{i}) = [rep.(names{i}).ss(zero, 1), rep.(names{i}).ss(zero, 2), rep.(names{i}).ss(zero, 3)];
+  endfor
+  ss0 = ss.plain;
+  hss = nan (nlobes, 3);
+  traces = cell (1, 3);
   for c = opt.channels(:)'
     t0 = tic ();
-    y = S.rgb(:,c);
+    y = Ss.rgb(:,c);
     if (any (y < 0) && ! any (y > 0))
       warning ("lafortune:negativeData",
                "lafortune_fit: channel %d has no positive value (a BRDF is non-negative); its fit is the zero model",
                c);
     endif
-    D = fit_data (x, y, wt, cosi, opt.weight, j, xc);
-    if (isequal (jr, j))
+    D = fit_data (fspec, c, j, xc, y);
+    D.P = fit_data (pspec, c, j, xc, Sf.rgb(:,c));
+    D.s = sc(c);
+    if (rows (xr) == rows (xc))
       R = D;
     else
-      R = fit_data (x, y, wt, cosi, opt.weight, jr, xr);
+      R = coarse_data (D, jg, xr);
     endif
     if (! isempty (opt.start))
-      p0 = fit_unscale (model_params (opt.start, c), 1 / D.s);
+      p0 = fit_unscale (model_params (opt.start, c), 1 / sc(c));
       ch = fit_channel (D, R, nlobes, opt, G, p0);
     elseif (strcmp (opt.init, "plain"))
       ## the paper's naive start, in the data's units
       p0 = [0.1; repmat([-1; 1; 0], nlobes, 1)];
       p0(4:3:end) = 10 * (1:nlobes);
-      ch = fit_channel (D, R, nlobes, opt, G, fit_unscale (p0, 1 / D.s));
+      ch = fit_channel (D, R, nlobes, opt, G, fit_unscale (p0, 1 / sc(c)));
     else
       ch = fit_channel (D, R, nlobes, opt, G);
     endif
-    p = fit_unscale (ch.p, D.s);
+    p = fit_unscale (ch.p, sc(c));
     model = set_params (model, c, p);
     for k = 1:numel (ch.ps)
       if (! isempty (ch.ps{k}) && k < nlobes)
-        pk = fit_unscale (ch.ps{k}, D.s);
+        pk = fit_unscale (ch.ps{k}, sc(c));
         models{k} = set_params (models{k}, c, pk);
-        info.history(k,c) = fit_metrics (lafortune_core (pk, x(:,1), x(:,2)), y, cosi, wt).rmse;
+        hss(k,c) = rep.plain.ss (lafortune_core (pk, xall(:,1), xall(:,2)), c);
       endif
     endfor
-    e = fit_metrics (lafortune_core (p, x(:,1), x(:,2)), y, cosi, wt);
-    info.history(nlobes,c) = e.rmse;
+    f = lafortune_core (p, xall(:,1), xall(:,2));
+    for i = 1:numel (names)
+      ss.(names{i})(c) = rep.(names{i}).ss (f, c);
+    endfor
+    hss(nlobes,c) = ss.plain(c);
     models{nlobes} = set_params (models{nlobes}, c, p);
     info.time(c) = toc (t0);
-    info.rmse(c) = e.rmse; info.rel_rmse(c) = e.rel_rmse;
-    info.log_rmse(c) = e.log_rmse; info.cos_rmse(c) = e.cos_rmse;
     info.iterations(c) = ch.iter;
     info.full_iterations(c) = ch.full_iter;
     info.rejected(c) = ch.rejected;
     info.converged(c) = ch.cvg;
     info.lobe_time(:,c) = ch.ktime(:);
-    info.trace{c} = best_trace (ch.trace, info.time(c), e.rmse, strcmp (info_reduce, "exact"));
+    traces{c} = ch.trace;
     if (! ch.cvg)
       warning ("lafortune:notConverged",
                "lafortune_fit: channel %d (%d lobes) did not converge in %d iterations; the parameters are finite but may not be optimal",
                c, nlobes, opt.max_iter);
     endif
   endfor
+  ## the reported errors: lafortune_error's values (metric_spec's finish)
+  fitted = false (1, 3);
+  fitted(opt.channels) = true;
+  info = report_errors (info, rep, ss, ss0, hss, fitted, opt.weight);
+  for c = opt.channels(:)'
+    info.trace{c} = best_trace (traces{c}, info.time(c), info.rmse(c), strcmp (info_reduce, "exact"));
+  endfor
   if (! strcmp (opt.init, "grow") || ! isempty (opt.start))
     models = {model};
   endif
+  ## the table's name goes with the models (exports carry it)
+  if (isfield (S, "name") && ischar (S.name) && ! isempty (S.name))
+    model.name = S.name;
+    for k = 1:numel (models)
+      models{k}.name = S.name;
+    endfor
+  endif
 endfunction
 
-function S = check_samples (S)
+## INFO's errors from the 1 x 3 sums of squares SS.(metric) of the fit, SS0
+## (plain, of the zero model) and HSS (plain, per lobe count) with the specs
+## REP; channels not FITTED get NaN
+function info = report_errors (info, rep, ss, ss0, hss, fitted, weight)
+  per = @(e) ifelse_nan (e, fitted);
+  info.rmse = per (rep.plain.finish (ss.plain));
+  rms0 = rep.plain.finish (ss0);
+  info.rel_rmse = per (info.rmse ./ max (rms0, realmin) .* (info.rmse > 0));
+  info.log_rmse = per (rep.log.finish (ss.log));
+  if (isfield (rep, "cosine"))
+    info.cos_rmse = per (rep.cosine.finish (ss.cosine));
+  endif
+  if (strcmp (weight, "psnr"))
+    info.error = rep.psnr.finish (ss.psnr);
+  else
+    info.error = per (rep.(weight).finish (ss.(weight)));
+  endif
+  for k = 1:rows (hss)
+    info.history(k,:) = per (rep.plain.finish (hss(k,:)));
+  endfor
+endfunction
+
+## E with NaN where FITTED is false (channels not fitted)
+function e = ifelse_nan (e, fitted)
+  e(! fitted) = NaN;
+endfunction
+
+## The specs of the reported metrics on the table S (data units): plain,
+## log, cosine (unless S.weight already is Ngan's cosine measure) and the
+## fit's own; NAMES lists them.  Delta is computed once.
+function [rep, names] = report_specs (S, weight)
+  rep.plain = metric_spec ("plain", S, "lafortune_fit");
+  names = {"plain", "log", weight};
+  if (! (isfield (S, "measure") && strcmp (S.measure, "cosine")))
+    names{end+1} = "cosine";
+  endif
+  names = unique (names);
+  for i = 1:numel (names)
+    if (! isfield (rep, names{i}))
+      rep.(names{i}) = metric_spec (names{i}, S, "lafortune_fit", rep.plain.delta);
+    endif
+  endfor
+endfunction
+
+## A scene table's prior (merl_scene's S.prior, a table of the material's
+## whole hemisphere, and S.prior_weight = r): appended to the table with
+## weights that sum to r times the table's own total weight in the fit's
+## metric (for "psnr" the weights times the irradiance squared; prior rows
+## get irradiance 1).  A single view (orthographic camera, directional
+## light) fixes gamma = angle (L, V), where a lobe's base is
+## Cxy cos gamma + (Cz - Cxy) uz vz: the scene's pixels determine only two
+## combinations of a lobe's three parameters, and the prior the third.
+function S = with_prior (S, args)
+  if (! isstruct (S) || ! isscalar (S) || ! isfield (S, "prior") || isempty (S.prior))
+    return;
+  endif
+  P = S.prior;
+  r = S.prior_weight;
+  S = rmfield (S, {"prior", "prior_weight"});
+  if (! (isstruct (P) && all (isfield (P, {"wi", "wo", "rgb"})) && isnumeric (r) && isscalar (r)
+         && r >= 0 && isfinite (r)) || r == 0 || ! isfield (S, "weight"))
+    if (r != 0)
+      error ("lafortune:badSamples",
+             "lafortune_fit: S.prior must be a table (wi, wo, rgb) and S.prior_weight a finite scalar >= 0");
+    endif
+    return;
+  endif
+  w = S.weight(:);
+  k = find (strcmpi (args(1:2:end), "weight"), 1, "last");
+  if (! isempty (k) && strcmpi (args{2*k}, "psnr") && isfield (S, "irradiance"))
+    w .*= mean (S.irradiance .^ 2, 2);
+  endif
+  wp = ones (rows (P.wi), 1);
+  if (isfield (P, "weight"))
+    wp = P.weight(:);
+  endif
+  wp *= r * sum (w) / max (sum (wp), realmin);
+  S.wi = [S.wi; P.wi];
+  S.wo = [S.wo; P.wo];
+  S.rgb = [S.rgb; P.rgb];
+  S.weight = [S.weight(:); wp];
+  if (isfield (S, "irradiance"))
+    S.irradiance = [S.irradiance; ones(rows (P.wi), columns (S.irradiance))];
+  endif
+endfunction
+
+## The rows K of the per-sample fields of the table S
+function S = rows_of (S, k)
+  if (all (k))
+    return;
+  endif
+  n = numel (k);
+  for f = {"wi", "wo", "rgb", "weight", "irradiance"}
+    if (isfield (S, f{1}) && rows (S.(f{1})) == n)
+      S.(f{1}) = S.(f{1})(k,:);
+    endif
+  endfor
+endfunction
+
+function [S, wt] = check_samples (S)
   if (! isstruct (S) || ! isscalar (S) || ! all (isfield (S, {"wi", "wo", "rgb"})))
     error ("lafortune:badSamples",
            "lafortune_fit: S must be a struct with fields wi, wo, rgb (see merl_plane)");
@@ -255,13 +421,17 @@ function S = check_samples (S)
              "lafortune_fit: S.weight must be N x 1 (N = %d), finite, >= 0 and not all zero", n);
     endif
     S.weight = double (w(:));
+    wt = S.weight;
   else
-    S.weight = ones (n, 1);
+    if (isfield (S, "weight"))
+      S = rmfield (S, "weight");
+    endif
+    wt = ones (n, 1);
   endif
 endfunction
 
 function opt = check_opts (opt, nlobes)
-  weights = {"plain", "cosine", "relative", "log"};
+  weights = metric_spec ();
   if (! ischar (opt.weight) || ! any (strcmp (opt.weight, weights)))
     error ("lafortune:badOption", "lafortune_fit: WEIGHT must be one of %s",
            strjoin (weights, ", "));
@@ -304,9 +474,10 @@ endfunction
 
 ## The groups the fit runs on (J, XC: exact equal (a, c) pairs, or grid
 ## cells when there are more than AUTO_GROUPS samples, or as "reduce" says)
-## and the coarser groups that screen starts (JR, XR: about "screen_samples"
-## cells, or the groups themselves when there are no more than that).
-function [j, xc, jr, xr, how] = groups (x, wt, opt)
+## and the coarse grid that screens starts (JG: each group's cell, XR: the
+## cells' positions; about "screen_samples" cells, or the groups themselves
+## when there are no more than that).
+function [j, xc, xr, how, jg] = groups (x, wt, opt)
   AUTO_GROUPS = 20000;
   AUTO_GRID = 512;
   if (isnumeric (opt.reduce))
@@ -322,7 +493,7 @@ function [j, xc, jr, xr, how] = groups (x, wt, opt)
   else
     how = sprintf ("grid %d", n);
   endif
-  jr = j; xr = xc;
+  xr = xc; jg = (1:rows (xc))';
   if (rows (xc) > opt.screen_samples)
     ## coarsen the groups (cells of about the wanted count)
     gw = accumarray (j, wt);
@@ -334,8 +505,32 @@ function [j, xc, jr, xr, how] = groups (x, wt, opt)
       endif
       n *= 2;
     endwhile
-    jr = jg(j);
   endif
+endfunction
+
+## The coarse data for screening starts and warm-up runs: per cell of the
+## coarse grid (JG: each group's cell, XR: the cells' positions), the group
+## of D nearest the cell's position stands for the cell, with the cell's
+## summed weights.  The objective on it is a quadrature of D's; unlike
+## the cell's mean value at its mean (a, c), it has no bias where the model
+## is curved within a cell, so its minimiser is closer to D's (measured on
+## the in-plane tables: 5 to 20% fewer iterations on D).
+function R = coarse_data (D, jg, xr)
+  W = accumarray (jg, D.w .^ 2);
+  Wl = accumarray (jg, D.wl .^ 2);
+  d = sum ((D.x - xr(jg,:)) .^ 2, 2);
+  ng = rows (xr);
+  [~, o] = sortrows ([jg d]);
+  first = true (numel (o), 1);
+  first(2:end) = jg(o(2:end)) != jg(o(1:end-1));
+  rep = zeros (ng, 1);
+  rep(jg(o(first))) = o(first);
+  R = D;
+  R.x = D.x(rep,:);
+  R.w = sqrt (W);
+  R.ty = D.ty(rep);
+  R.wl = sqrt (Wl);
+  R.yl = D.yl(rep);
 endfunction
 
 ## [seconds, rmse of the best parameters so far (best in the fit's own

@@ -40,6 +40,16 @@
 ## @item name, scene, bin, samples
 ## the material's name, the scene's name, the cell size (degrees) and the
 ## number of pixel samples.
+## @item prior, prior_weight
+## for a MERL material, the whole hemisphere (@code{merl_samples}, grazing
+## angles beyond 80 degrees left out) and its weight in a fit (option
+## @qcode{"prior"}, default 0.01; 0: none).  @code{lafortune_fit} appends it
+## with weights that sum to @code{prior_weight} times the table's own: one
+## view fixes the angle gamma between light and viewer, where a lobe's base
+## Cxy (ux vx + uy vy) + Cz uz vz is Cxy cos gamma + (Cz - Cxy) uz vz, so the
+## scene determines only two of a lobe's three parameters; the prior
+## settles the third (without it a fit may use Cxy = Cz and a huge exponent,
+## a constant in this view that explodes in any other).
 ## @end table
 ##
 ## A model's image error is then a weighted sum over the table: with one
@@ -50,8 +60,8 @@
 ## render's PSNR.  @var{img} is the scene rendered from the table (H x W x 3,
 ## background where nothing is hit).
 ##
-## Option @qcode{"bin"}: the cell size in degrees (default 0.25; smaller
-## cells, more rows).
+## Options: @qcode{"bin"}, the cell size in degrees (default 0.25; smaller
+## cells, more rows); @qcode{"prior"} (above).
 ##
 ## @example
 ## @group
@@ -75,9 +85,12 @@ function [S, img] = merl_scene (material, scene, varargin)
            "merl_scene: MATERIAL must be a MERL material or a Lafortune model, got %s",
            class (material));
   endif
-  opt = parse_opts (varargin, "merl_scene", struct ("bin", 0.25));
+  opt = parse_opts (varargin, "merl_scene", struct ("bin", 0.25, "prior", 0.01));
   if (! (isnumeric (opt.bin) && isscalar (opt.bin) && opt.bin > 0 && opt.bin <= 10))
     error ("lafortune:badOption", "merl_scene: BIN must be a cell size in (0, 10] degrees");
+  endif
+  if (! (isnumeric (opt.prior) && isscalar (opt.prior) && opt.prior >= 0 && isfinite (opt.prior)))
+    error ("lafortune:badOption", "merl_scene: PRIOR must be a finite weight >= 0");
   endif
   [objs, epsilon] = scene_setup (scene);
   cam = scene_camera (scene);
@@ -141,7 +154,11 @@ function [S, img] = merl_scene (material, scene, varargin)
 
   S = struct ("kind", "scene", "wi", wi, "wo", wo, "rgb", rgb, "weight", cnt / total,
               "irradiance", irr, "peak", max (img(:)), "name", name_of (material), "scene", name_of (scene),
-              "bin", opt.bin, "samples", total);
+              "bin", opt.bin, "samples", total, "prior", [], "prior_weight", 0);
+  if (opt.prior > 0 && strcmp (material_kind (material), "merl"))
+    S.prior = merl_samples (material, "max_angle", 80);
+    S.prior_weight = opt.prior;
+  endif
 endfunction
 
 %!shared brdf, m2
@@ -189,6 +206,21 @@ endfunction
 %!error id=lafortune:badScene merl_scene (struct ("rho_d", [1 1 1], "Cxy", [], "Cz", [], "e", []), 1)
 %!error id=lafortune:badMaterial merl_scene (42, scene_make ("sphere", "size", 4))
 %!error id=lafortune:badOption merl_scene (struct ("rho_d", [1 1 1], "Cxy", zeros (0, 3), "Cz", zeros (0, 3), "e", zeros (0, 3)), scene_make ("sphere", "size", 4), "bin", 0)
+%!error id=lafortune:badOption merl_scene (struct ("rho_d", [1 1 1], "Cxy", zeros (0, 3), "Cz", zeros (0, 3), "e", zeros (0, 3)), scene_make ("sphere", "size", 4), "prior", -1)
+
+%!test
+%! ## a MERL material's table carries the whole hemisphere as a prior, and the
+%! ## fit made with it renders well in another view too
+%! sc = scene_make ("sphere", "size", [48 48], "spp", 1, "jitter", false);
+%! S = merl_scene (brdf, sc);
+%! assert (S.prior_weight, 0.01);
+%! assert (rows (S.prior.wi) > 1e5);
+%! m = lafortune_fit (S, 2, "weight", "psnr");
+%! sb = sc; sb.light.direction = [1 0.3 0.6] / norm ([1 0.3 0.6]);
+%! ref = rt_render (sb, brdf, "progress", false);
+%! assert (img_psnr (ref, rt_render (sb, m, "progress", false)) > 30);
+%! S0 = merl_scene (brdf, sc, "prior", 0);
+%! assert (isempty (S0.prior) && S0.prior_weight == 0);
 
 %!demo
 %! ## which angle pairs the sphere's picture needs, and how much

@@ -246,9 +246,9 @@ function info = pov_write_scene (scene, material, file, varargin)
     ## the whole material on a common grid, for its largest radiance
     t = linspace (rng_i(1), rng_i(2), 129);
     u = linspace (rng_o(1), rng_o(2), 129);
-    Mc = true (129);
+    Mc = u >= abs (t' - gl(g)) & u <= min (t' + gl(g), 2 * pi - t' - gl(g));
     if (! isempty (samp))
-      Mc = reach_mask (samp, t', u', opt.pad);
+      Mc &= reach_mask (samp, t', u', opt.pad);
     endif
     peak = max ([peak, contrib, masked_max(scene_slice (sg, material, t, u), Mc)]);
   endfor
@@ -475,9 +475,20 @@ function D = term_grid (scene, term, rng_i, rng_o, n, samp, opt, gam)
   D.flat = flat;
   D.ti = ti;
   D.to = to;
+  ## the largest radiance where a normal really reaches (no padding): past
+  ## the boundary scene_slice's clamped configurations are not the scene's
+  ## and a sharp lobe may be huge there
+  M0 = to' >= abs (ti - gam) & to' <= min (ti + gam, 2 * pi - ti - gam);
+  if (! isempty (samp))
+    M0 &= reach_mask (samp, ti, to, opt.pad);
+  endif
+  D.max = masked_max (R, M0 & M);
+  ## the padding and the continuation only serve the interpolation: no entry
+  ## above 10 times the term's largest radiance in the view (the file then
+  ## holds no 1e130 where a lobe explodes past what the view reaches)
+  T = min (T, 10 * D.max ./ max (cos (ti), 1e-3));
   D.T = T;
   D.M = M;
-  D.max = masked_max (R, M);
 endfunction
 
 ## largest |second derivative| along dimension 1 of G over the masked columns

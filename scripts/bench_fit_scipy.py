@@ -13,7 +13,7 @@
 #   TABLE  text file, one sample per row: sxy sz r g b
 #          (sxy = ux vx + uy vy, sz = uz vz)
 #   LOBES  largest lobe count (fits 1 .. LOBES)
-#   REPS   repetitions; the shortest times are printed
+#   REPS   repetitions; the median times are printed
 # prints one line per lobe count:
 #   lobes wall_seconds rmse_r rmse_g rmse_b nfev(total) cpu_seconds
 # (times for all 3 channels; cpu = this process's processor time)
@@ -93,13 +93,14 @@ def main():
     sxy, sz, rgb = T[:, 0].copy(), T[:, 1].copy(), T[:, 2:5]
     lobes, reps = int(sys.argv[2]), int(sys.argv[3])
     for k in range(1, lobes + 1):
-        best = cbest = np.inf
+        wall, cpu = [], []
         for _ in range(reps):
             t0 = time.perf_counter()
             c0 = time.process_time()
             out = [fit_channel(sxy, sz, rgb[:, c].copy(), k) for c in range(3)]
-            cbest = min(cbest, time.process_time() - c0)
-            best = min(best, time.perf_counter() - t0)
+            cpu.append(time.process_time() - c0)
+            wall.append(time.perf_counter() - t0)
+        best, cbest = np.median(wall), np.median(cpu)
         rmse = [np.sqrt(np.mean((model(p, sxy, sz)[0] - rgb[:, c]) ** 2))
                 for c, (p, _) in enumerate(out)]
         nfev = sum(n for _, n in out)

@@ -8,10 +8,11 @@
 ## STUDY_TABLES (@code{inplane}: the paper's plane of incidence;
 ## @code{hemisphere}: every valid bin with its solid-angle weight;
 ## @code{scene}: the angle pairs the scene's pixels see, @code{merl_scene},
-## from STUDY_TABLE_SPP samples per pixel) is fitted with every weighting of
-## STUDY_WEIGHTS, 1 to max (LOBES) lobes, and the scene table also with
-## @code{image} weights (each pair's share of the image times its
-## irradiance squared: the image's MSE, so the fit maximises the render's
+## from STUDY_TABLE_SPP samples per pixel, with 1% of the whole hemisphere
+## as a prior) is fitted with every weighting of STUDY_WEIGHTS, 1 to
+## max (LOBES) lobes, and the scene table also with @code{image} weights
+## (@code{lafortune_fit}'s "psnr": each pair's share of the image times its
+## irradiance squared, the image's MSE, so the fit maximises the render's
 ## PSNR).  Each fit is rendered with POV-Ray in the scene and in a second
 ## scene lit from STUDY_LIGHT, and compared (PSNR) with the measured data
 ## rendered there by POV-Ray with the same samples.  A model met before
@@ -84,8 +85,7 @@ function R = repro_study (material)
     S = T.(tn);
     w = wn;
     if (strcmp (wn, "image"))
-      S.weight = S.weight .* mean (S.irradiance .^ 2, 2);
-      w = "plain";
+      w = "psnr";                   # the image's MSE (lafortune_fit, "weight", "psnr")
     endif
     printf ("reproduce: [%s] study: %s table, %s weights, 1..%d lobes\n", material, tn, wn, nl);
     fflush (stdout);

@@ -5,7 +5,8 @@
 ## @deftypefn {} {@var{ch} =} fit_channel (@var{D}, @var{R}, @var{nlobes}, @var{opt}, @var{G}, @var{p0})
 ## Fit one channel (private): @var{D} the data, @var{R} a coarser grouping of
 ## the same data for screening starts (both from fit_data, in the same
-## scaled units), @var{G} the acceptance set (fit_guard).  With a start
+## scaled units; @code{D.P} the plain metric's groups in the data's units and
+## @code{D.s} the scale, for the trace), @var{G} the acceptance set (fit_guard).  With a start
 ## @var{p0}, one Levenberg-Marquardt run from it; else lobes are added one
 ## at a time: starts (fit_starts), runs (fit_lm), acceptance (fit_guard and
 ## a lower objective; a zero lobe keeps the previous error, so more lobes
@@ -28,8 +29,9 @@ function ch = fit_channel (D, R, nlobes, opt, G, p0)
   endif
   ## 0 lobes: rho_d by weighted least squares
   p = max (pi * sum (D.wl .^ 2 .* D.yl) / max (sum (D.wl .^ 2), realmin), 0);
-  [obj, err] = fit_objective (D, lafortune_core (p, D.x(:,1), D.x(:,2)));
-  ch.trace = [toc(t0), obj, err];
+  f0 = lafortune_core (p, D.x(:,1), D.x(:,2));
+  obj = fit_objective (D, f0);
+  ch.trace = [toc(t0), obj, fit_objective(D.P, D.s * f0)];
   for k = 1:nlobes
     run = add_lobe (D, R, p, obj, opt, G, t0);
     p = run.p;
@@ -48,19 +50,28 @@ endfunction
 ## One more lobe on top of P (objective OBJ).  When TRIES > 1, the best
 ## start of each of the first TRIES direction families gets up to SCREEN_ITER
 ## iterations on R and they are ranked by the result; the others follow in
-## the order of fit_starts.  From the first start, a run to convergence on R
-## (when R is much smaller than D) and last on D.  A result that fails the
-## guard is rejected and the next start tried; a result that is not better
-## keeps a zero lobe.
+## the order of fit_starts.  From the first start, a warm-up run on R (when
+## that pays, see below) and last a run to convergence on D.  A result that
+## fails the guard is rejected and the next start tried; a result that is
+## not better keeps a zero lobe.
 function run = add_lobe (D, R, p, obj, opt, G, t0)
+  WARMUP_COST = 2e5;
+  WARMUP_TOL = 1e-4;
   run = struct ("p", [p; 0; 0; 1], "obj", obj, "trace", zeros (0, 3), "iter", 0,
                 "full_iter", 0, "rejected", 0, "cvg", true);
   starts = fit_starts (R, p);
   if (isempty (starts) || ! (obj > 0))
     return;
   endif
-  ## a run on R first pays only when R is much smaller than D
-  coarse = 4 * rows (R.x) < rows (D.x);
+  ## a warm-up run on R pays only when R is much smaller than D and an
+  ## iteration on D costs much more than leasqr's fixed cost per iteration
+  ## (measured: about an SVD of groups x parameters^2 = 200000; on the
+  ## in-plane table, 6561 groups, from 2 lobes on); it stops at a looser
+  ## tolerance, as it only brings the start closer
+  np = rows (starts);
+  coarse = 4 * rows (R.x) < rows (D.x) && rows (D.x) * np ^ 2 > WARMUP_COST;
+  warm = opt;
+  warm.tol = max (opt.tol, WARMUP_TOL);
   ntry = min (opt.tries, columns (starts));
   done = false (1, columns (starts));
   if (ntry > 1)
@@ -79,7 +90,7 @@ function run = add_lobe (D, R, p, obj, opt, G, t0)
   for i = 1:columns (starts)
     ps = starts(:,i);
     if (coarse && ! done(i))
-      [ps, it] = fit_lm (R, ps, opt);
+      [ps, it] = fit_lm (R, ps, warm);
       run.iter += it;
     endif
     [pj, it, cv, T] = fit_lm (D, ps, opt, t0);

@@ -2,63 +2,46 @@
 ## SPDX-License-Identifier: GPL-3.0-or-later
 
 ## -*- texinfo -*-
-## @deftypefn {} {@var{D} =} fit_data (@var{x}, @var{y}, @var{wt}, @var{cosi}, @var{weight}, @var{j}, @var{xc})
-## One channel's data as the fit sees it (private).  @var{x} = [a, c]
-## (N x 2), @var{y} the channel (N x 1), @var{wt} sample weights, @var{cosi}
-## cos theta_i, @var{weight} the residual weighting ("plain", "cosine",
-## "relative", "log"), @var{j} and @var{xc} a grouping from fit_reduce.
+## @deftypefn {} {@var{D} =} fit_data (@var{spec}, @var{c}, @var{j}, @var{xc}, @var{y})
+## One channel's data as the fit sees it (private): the sums of the metric
+## @var{spec} (from metric_spec, the one definition of the metrics) for
+## channel @var{c}, merged over the groups @var{j} (N x 1, from fit_reduce)
+## at positions @var{xc} (G x 2, [a, c]); @var{y} (N x 1) is the channel's
+## data in the units @var{spec} was made in.
 ##
-## The data are divided by their largest magnitude @code{D.s} first, so
-## that nothing in the fit depends on the data's units (map the parameters
-## back with fit_unscale).  The objective is sum_i wt_i (w_i (ty_i -
-## tf(f_i)))^2 / sum_i wt_i, tf = identity or log; per group it keeps the
-## summed squared weights @code{D.w .^ 2}, the weighted mean target
-## @code{D.ty} and the within-group remainder @code{D.wsw}, so that a fit over
-## the groups has the same objective (exactly, when the groups hold equal
-## (a, c)).  @code{D.cnt}, @code{D.ybar} and @code{D.ssw} do the same for the
-## plain rmse, @code{D.wl}, @code{D.yl} for the linear amplitudes of the
-## candidate starts.
+## The metric is ss = sum_k w_k (t (f_k) - ty_k)^2 with per-sample weights w
+## and transformed data ty (@code{spec.w}, @code{spec.ty}) and one transform
+## t per channel, so for samples with equal (a, c), which share f,
+## sum_k w_k (t (f) - ty_k)^2 = W (t (f) - tybar)^2 + sum_k w_k (ty_k -
+## tybar)^2, W = sum_k w_k, tybar the w-weighted mean of ty: whatever the
+## weights and data of the samples, the merged sum is exact.  @var{D} keeps
+## @code{w} = sqrt (W), @code{ty} = tybar and the remainder @code{wsw}, so
+## that fit_objective gives the metric's value; @code{n} (the metric's
+## divisor), @code{t}, @code{dt}, @code{c} and @code{identity} (the
+## transform), and for the linear amplitudes of the candidate starts the
+## first-order weights w t'(y)^2 and their weighted mean data (@code{wl} =
+## sqrt of their group sums, @code{yl}).  @code{ymax} is the largest |y|.
 ## @end deftypefn
-function D = fit_data (x, y, wt, cosi, weight, j, xc)
-  s = max (abs (y(wt > 0)));
-  if (! (s > 0))
-    s = 1;
-  endif
-  y = y / s;
-  dl = 1;
-  if (any (strcmp (weight, {"relative", "log"})))
-    dl = fit_log_delta (y, wt);
-  endif
-  switch (weight)
-    case {"plain", "log"}
-      w2 = ones (size (y));
-    case "cosine"
-      w2 = cosi .^ 2;
-    case "relative"
-      w2 = 1 ./ max (y, dl) .^ 2;
-  endswitch
-  islog = strcmp (weight, "log");
-  if (islog)
-    ty = log (max (y, 0) + dl);
-    wl2 = 1 ./ (max (y, 0) + dl) .^ 2;     # first-order weights for amplitudes
-  else
-    ty = y;
-    wl2 = w2;
-  endif
-  W = accumarray (j, wt .* w2);
-  Wl = accumarray (j, wt .* wl2);
+function D = fit_data (spec, c, j, xc, y)
+  w = spec.w(:,c);
+  ty = spec.ty(:,c);
+  W = accumarray (j, w);
   D.x = xc;
   D.w = sqrt (W);
-  D.ty = accumarray (j, wt .* w2 .* ty) ./ max (W, realmin);
+  D.ty = accumarray (j, w .* ty) ./ max (W, realmin);
+  D.wsw = sum (w .* (ty - D.ty(j)) .^ 2);
+  D.n = max (spec.norm, realmin);
+  D.t = spec.t;
+  D.dt = spec.dt;
+  D.c = c;
+  D.identity = spec.identity;
+  if (spec.identity)
+    wl2 = w;
+  else
+    wl2 = w .* spec.dt (y, c) .^ 2;
+  endif
+  Wl = accumarray (j, wl2);
   D.wl = sqrt (Wl);
-  D.yl = accumarray (j, wt .* wl2 .* y) ./ max (Wl, realmin);
-  D.cnt = accumarray (j, wt);
-  D.ybar = accumarray (j, wt .* y) ./ max (D.cnt, realmin);
-  D.n = max (sum (wt), realmin);
-  D.ssw = sum (wt .* (y - D.ybar(j)) .^ 2);
-  D.wsw = sum (wt .* w2 .* (ty - D.ty(j)) .^ 2);
-  D.s = s;
-  D.dl = dl;
-  D.islog = islog;
-  D.ymax = max (abs (y(wt > 0)));
+  D.yl = accumarray (j, wl2 .* y) ./ max (Wl, realmin);
+  D.ymax = max (abs (y));
 endfunction

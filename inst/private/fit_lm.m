@@ -9,8 +9,10 @@
 ## @code{opt.bounds}, @code{opt.tol} and @code{opt.max_iter}.
 ##
 ## With @var{t0} (a @code{tic} value), every evaluation of the model is noted
-## as a row [seconds since @var{t0}, objective, rmse] of @var{T} (see
-## fit_objective); the caller decides whether the run counts.
+## as a row [seconds since @var{t0}, objective, rmse] of @var{T}: the
+## objective of @var{D} and the plain rmse of @code{D.P} (the plain metric's
+## groups, in the data's units: the model times @code{D.s}); the caller
+## decides whether the run counts.
 ## @end deftypefn
 function [p, iter, cvg, T] = fit_lm (D, p0, opt, t0 = [])
   np = numel (p0);
@@ -71,15 +73,16 @@ endfunction
 function f = model_fun (D, p, rec)
   f = lafortune_core (p, D.x(:,1), D.x(:,2));
   if (! isempty (rec))
-    [o, e] = fit_objective (D, f);
-    rec.add (o, e);
+    rec.add (fit_objective (D, f), fit_objective (D.P, D.s * f));
   endif
-  f = fit_tf (D, f);
+  if (! D.identity)
+    f = D.t (f, D.c);
+  endif
 endfunction
 
 function J = model_jac (D, p)
   [f, J] = lafortune_core (p, D.x(:,1), D.x(:,2));
-  if (D.islog)
-    J ./= (max (f, 0) + D.dl);
+  if (! D.identity)
+    J .*= D.dt (f, D.c);
   endif
 endfunction

@@ -2,14 +2,15 @@
 ## SPDX-License-Identifier: GPL-3.0-or-later
 
 ## -*- texinfo -*-
-## @deftypefn {} {[@var{obj}, @var{err}] =} fit_objective (@var{D}, @var{f})
-## The fit's own objective (root of the weighted mean square, in the units
-## of the scaled data) and the plain rmse in the data's units, for model
-## values @var{f} at the groups of @var{D} (from fit_data; private).
+## @deftypefn {} {@var{obj} =} fit_objective (@var{D}, @var{F})
+## The root of the mean merged sum of squares of @var{D} (from fit_data;
+## private) for model values @var{F} at its groups: sqrt (ss / norm), the
+## value of "plain", "cosine" and the other per-channel metrics.  @var{F}
+## may have several columns (one value per column).
 ## @end deftypefn
-function [obj, err] = fit_objective (D, f)
-  obj = sqrt ((sum ((D.w .* (D.ty - fit_tf (D, f))) .^ 2) + D.wsw) / D.n);
-  if (nargout > 1)
-    err = D.s * sqrt ((sum (D.cnt .* (D.ybar - f) .^ 2) + D.ssw) / D.n);
+function obj = fit_objective (D, F)
+  if (! D.identity)
+    F = D.t (F, D.c);
   endif
+  obj = sqrt ((sum (D.w .^ 2 .* (D.ty - F) .^ 2, 1) + D.wsw) / D.n);
 endfunction

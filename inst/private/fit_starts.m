@@ -22,7 +22,6 @@ function P = fit_starts (D, p)
   fcur = lafortune_core (p, D.x(:,1), D.x(:,2));
   r = D.yl - fcur;
   wl2 = D.wl .^ 2;
-  w2 = D.w .^ 2;
   S1 = sum (wl2);
   Sr = sum (wl2 .* r);
   cand = zeros (0, 6);     # [objective, d, cxy, cz, e, family]
@@ -52,11 +51,11 @@ function P = fit_starts (D, p)
     if (! any (ok))
       continue;
     endif
-    ## the objective of every candidate at once (fit_objective, by columns)
+    ## the objective of every candidate at once (by columns)
     s = s(ok); d = d(ok); g = g(:,ok);
     F = fcur + d;
     F(on,:) += g .* s;
-    obj = sqrt ((sum (w2 .* (D.ty - fit_tf (D, F)) .^ 2, 1) + D.wsw) / D.n);
+    obj = fit_objective (D, F);
     cand = [cand; obj(:), d(:), a(ok)(:) * dirs(i,:), expo(ok)(:), i * ones(numel (s), 1)];
   endfor
   if (isempty (cand))

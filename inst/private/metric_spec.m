@@ -2,9 +2,15 @@
 ## SPDX-License-Identifier: GPL-3.0-or-later
 
 ## -*- texinfo -*-
-## @deftypefn {} {@var{spec} =} metric_spec (@var{metric}, @var{S}, @var{fname})
+## @deftypefn  {} {@var{spec} =} metric_spec (@var{metric}, @var{S}, @var{fname})
+## @deftypefnx {} {@var{spec} =} metric_spec (@var{metric}, @var{S}, @var{fname}, @var{delta})
+## @deftypefnx {} {@var{names} =} metric_spec ()
 ## The one definition of the error metrics (private): what
-## @code{lafortune_error} reports and what a least-squares fitter minimises.
+## @code{lafortune_error} reports and what a least-squares fitter
+## (@code{lafortune_fit}) minimises.  Without arguments, the metrics' names
+## (a cell).  @var{delta} (1 x 3), when given, is the table's delta below,
+## already known (from another spec of the same table): it saves the
+## weighted medians.
 ##
 ## Every metric is a weighted sum of squares over the samples of a table
 ## @var{S} (fields @code{rgb}, N x 3, @code{wi}, N x 3, and the optional
@@ -25,7 +31,12 @@
 ## (1 when absent) and m the metric's own weight below.
 ## @item t, dt
 ## handles @code{t (f, c)} and @code{dt (f, c)}: the transform of channel
-## c's model values (column) and its derivative.
+## c's model values (column, or a matrix of columns) and its derivative.
+## @item identity
+## true when t (f) = f (then dt = 1).
+## @item ss
+## handle @code{ss (f, c)}: channel c's weighted sum of squares above for
+## the model values @var{f} (N x 1) at the samples.
 ## @item ty
 ## N x 3, the transformed data t (y).
 ## @item delta
@@ -85,8 +96,12 @@
 ## mean (ss) = sum_k weight_k mean_c ((f - y) irradiance)^2 is the image's
 ## MSE, exactly when every pixel sees one angle pair.
 ## @end deftypefn
-function spec = metric_spec (metric, S, fname)
+function spec = metric_spec (metric, S, fname, delta)
   names = {"plain", "cosine", "relative", "log", "cuberoot", "psnr"};
+  if (nargin == 0)
+    spec = names;
+    return;
+  endif
   if (! ischar (metric) || ! any (strcmp (metric, names)))
     error ("lafortune:badMetric", "%s: METRIC must be one of %s", fname,
            strjoin (names, ", "));
@@ -104,16 +119,18 @@ function spec = metric_spec (metric, S, fname)
     endif
     s = double (s);
   endif
-  delta = ones (1, 3);
-  for c = 1:3
-    pos = y(:,c) > 0 & s > 0;
-    if (any (pos))
-      delta(c) = 0.01 * wmedian (y(pos,c), s(pos));
-    endif
-  endfor
+  if (nargin < 4 || isempty (delta))
+    delta = ones (1, 3);
+    for c = 1:3
+      pos = y(:,c) > 0 & s > 0;
+      if (any (pos))
+        delta(c) = 0.01 * wmedian (y(pos,c), s(pos));
+      endif
+    endfor
+  endif
   spec = struct ("name", metric, "w", [], "t", @(f, c) f, "dt", @(f, c) ones (size (f)),
                  "ty", y, "delta", delta, "norm", sum (s), "finish", @(ss) sqrt (ss / sum (s)),
-                 "degree", 1, "peak", NaN);
+                 "degree", 1, "peak", NaN, "identity", true, "ss", []);
   switch (metric)
     case "plain"
       spec.w = s .* ones (1, 3);
@@ -134,12 +151,14 @@ function spec = metric_spec (metric, S, fname)
       spec.dt = @(f, c) (f >= 0) ./ (max (f, 0) + delta(c));
       spec.ty = log (max (y, 0) + delta);
       spec.degree = 0;
+      spec.identity = false;
     case "cuberoot"
       spec.w = s .* ones (1, 3);
       spec.t = @(f, c) (max (f, 0) + delta(c)) .^ (1/3);
       spec.dt = @(f, c) (f >= 0) .* (max (f, 0) + delta(c)) .^ (-2/3) / 3;
       spec.ty = (max (y, 0) + delta) .^ (1/3);
       spec.degree = 1/3;
+      spec.identity = false;
     case "psnr"
       if (! isfield (S, "kind") || ! strcmp (S.kind, "scene"))
         error ("lafortune:badMetric",
@@ -178,12 +197,21 @@ function spec = metric_spec (metric, S, fname)
       spec.degree = 0;
       spec.peak = peak;
   endswitch
+  w = spec.w; t = spec.t; ty = spec.ty;
+  spec.ss = @(f, c) sum (w(:,c) .* (t (f, c) - ty(:,c)) .^ 2);
 endfunction
 
 ## median of Y under the weights S (> 0): the smallest y with at least half
 ## the weight at or below it, averaged with the next one at exactly half
 ## (equal weights: the ordinary median)
 function m = wmedian (y, s)
+  if (all (s == s(1)))
+    ## equal weights: the ordinary median, in linear time
+    n = numel (y);
+    v = nth_element (y, floor ((n + 1) / 2):ceil ((n + 1) / 2));
+    m = (v(1) + v(end)) / 2;
+    return;
+  endif
   [y, o] = sort (y);
   cs = cumsum (s(o));
   h = cs(end) / 2;
