@@ -33,8 +33,10 @@ SPP_STUDY_QUICK ?= 1 2 4
 # every table of STUDY_TABLES fitted with every weighting of STUDY_WEIGHTS (and
 # the scene table with image weights), each fit rendered in the scene and in a
 # second scene lit from STUDY_LIGHT.  STUDY: 1 on, 0 off, auto (on for the
-# built-in scenes, off with MESH: a mesh's renders take seconds each)
+# built-in scenes, off with MESH: a mesh's renders take seconds each; off in
+# the QUICK classroom run)
 STUDY ?= auto
+STUDY_QUICK ?= 0
 STUDY_TABLES ?= inplane hemisphere scene
 STUDY_WEIGHTS ?= plain cosine relative log
 STUDY_LIGHT ?= 1 0.3 0.6

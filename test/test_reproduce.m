@@ -7,7 +7,7 @@
 ## exist and hold finite numbers, and a second run must redo nothing.
 ## Run by `make check` (which sets LAFORTUNE_TOP).
 
-%!function __reproduce (use_proxy, mesh = "")
+%!function __reproduce (use_proxy, mesh = "", extra = "")
 %! top = getenv ("LAFORTUNE_TOP");
 %! if (isempty (top))
 %!   top = pwd ();
@@ -23,8 +23,8 @@
 %!   proxy = fullfile (out, "no-merl-files");
 %! endif
 %! unwind_protect
-%!   cmd = sprintf ("make --no-print-directory -C '%s' reproduce QUICK=1 RESULTS='%s' MERL_DIR='%s' MESH='%s' 2>&1",
-%!                  top, out, proxy, mesh);
+%!   cmd = sprintf ("make --no-print-directory -C '%s' reproduce QUICK=1 RESULTS='%s' MERL_DIR='%s' MESH='%s' %s 2>&1",
+%!                  top, out, proxy, mesh, extra);
 %!   [st, txt] = system (cmd);
 %!   if (st != 0)
 %!     printf ("%s\n", txt);
@@ -39,6 +39,15 @@
 %!     assert (! isempty (regexp (head, "green-metallic-paint.*no MERL file found.*built-in stand-in")));
 %!   endif
 %!   assert (! isempty (strfind (rep, "| green-metallic-paint | 2 | 31.44 dB |")));
+%!   if (! isempty (extra))
+%!     ## the study, reduced: in-plane and scene tables, plain weights
+%!     assert (! isempty (strfind (rep, "## Which fit looks right")));
+%!     assert (! isempty (strfind (rep, "| scene | image |")));
+%!     assert (exist (fullfile (out, "figures", "study-red-plastic.png"), "file") == 2);
+%!     R = jsondecode (fileread (fullfile (out, "study", "red-plastic.json")));
+%!     assert (numel (R.methods), 3);
+%!     assert (all (isfinite ([R.methods.psnr_a])) && all (isfinite ([R.methods.psnr_b])));
+%!   endif
 %!   if (! isempty (mesh))
 %!     ## the paper's scene: the mesh named in the settings, every fit's PSNR
 %!     ## against the measured render by the same renderer
@@ -79,7 +88,7 @@
 %! end_unwind_protect
 %!endfunction
 
-%!test __reproduce (true)    # on ../shared/data/merl-proxy
+%!test __reproduce (true, "", "STUDY=1 STUDY_WEIGHTS=plain STUDY_TABLES='inplane scene'")  # on ../shared/data/merl-proxy
 %!test __reproduce (false)   # no MERL files: the built-in stand-ins
 
 %!test
