@@ -123,9 +123,10 @@
 %!   assert (st, 0, txt);
 %!   assert (isempty (regexp (txt, "fitting|rendering|POV-Ray|FAILED|database: \\d+ materials")), txt);
 %!   assert (dir (fullfile (db, "table.csv")).datenum, t0);
-%!   ## a change to pov_render re-runs the fits' renders, not the fits nor the measured renders
-%!   ## (make passes -W to no sub-make: ask for the table itself)
-%!   [st, txt] = __make (top, db, merl, sprintf ("-W inst/pov_render.m -j2 '%s'", fullfile (db, "table.csv")));
+%!   ## a change to lafortune_import (which only the fits' renders call) re-runs
+%!   ## the fits' renders, not the fits nor the measured renders (make passes -W
+%!   ## to no sub-make: ask for the table itself)
+%!   [st, txt] = __make (top, db, merl, sprintf ("-W inst/lafortune_import.m -j2 '%s'", fullfile (db, "table.csv")));
 %!   assert (st, 0, txt);
 %!   assert (! isempty (regexp (txt, "\\[red-plastic\\] POV-Ray render")), txt);
 %!   assert (isempty (regexp (txt, "fitting|rendering the measured")), txt);
