@@ -31,14 +31,8 @@ addpath (fullfile (here, "..", "inst"));
 warning ("off", "Octave:shadowed-function");
 warning ("off", "lafortune:notConverged");
 addpath (here);
-proxy = bench_data ("green-metallic-paint");
-if (! isempty (proxy))
-  brdf = merl_read (proxy);
-  src = ["stand-in file " proxy];
-else
-  brdf = merl_standin ("green-metallic-paint");
-  src = "built-in Cook-Torrance stand-in (../shared absent)";
-endif
+[proxy, brdf, src] = bench_data ("green-metallic-paint", @() merl_standin ("green-metallic-paint"),
+                                "built-in Cook-Torrance stand-in");
 S = merl_plane (brdf);
 printf ("bench_fit: %s, in-plane table of %d samples (grazing > 80 deg left out)\n\n", src, rows (S.wi));
 

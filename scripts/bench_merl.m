@@ -53,14 +53,8 @@ if (exist ("__merl_nearest__", "file") != 3)
   return;
 endif
 
-proxy = bench_data ("green-metallic-paint");
-if (! isempty (proxy))
-  brdf = merl_read (proxy);
-  src = ["stand-in file " proxy];
-else
-  brdf = merl_standin ("green-metallic-paint");
-  src = "merl_standin (\"green-metallic-paint\") (../shared absent)";
-endif
+[proxy, brdf, src] = bench_data ("green-metallic-paint", @() merl_standin ("green-metallic-paint"),
+                                "merl_standin (\"green-metallic-paint\")");
 sizes = [1e4 2e5 1e6 4e6];
 if (quick)
   sizes = [1e4 2e5];

@@ -313,17 +313,7 @@ function plot_psnr (P, c, mats, label, file)
     title (label_of (label, m), "interpreter", "none");
     grid on;
   endfor
-  d = fileparts (file);
-  if (! isfolder (d))
-    mkdir (d);
-  endif
-  tmp = [file ".tmp.png"];
-  print (h, "-dpngcairo", "-r90", tmp);
-  close (h);
-  [err, msg] = rename (tmp, file);
-  if (err)
-    error ("lafortune:unwritable", "db_report: cannot write '%s': %s", file, msg);
-  endif
+  repro_print (h, file, 90, "db_report");
 endfunction
 
 function write_gallery (c, D, P, label)

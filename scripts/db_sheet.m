@@ -52,13 +52,7 @@ function R = db_sheet (material)
     mkdir (sd);
   endif
   file = fullfile (sd, [material ".png"]);
-  tmp = [file ".tmp.png"];
-  print (h, "-dpngcairo", "-r72", tmp);
-  close (h);
-  [err, msg] = rename (tmp, file);
-  if (err)
-    error ("lafortune:unwritable", "db_sheet: cannot write '%s': %s", file, msg);
-  endif
+  repro_print (h, file, 72, "db_sheet");
   R = struct ("file", fullfile ("sheet", [material ".png"]), "exposure", stops);
 endfunction
 

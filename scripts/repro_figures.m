@@ -151,11 +151,5 @@ function spp_figure (c, file)
     endif
     title (ax, sprintf ("%s: measured data, rt_render", mat), "interpreter", "none");
   endfor
-  tmp = [file ".tmp.png"];
-  print (h, "-dpngcairo", "-r90", tmp);
-  close (h);
-  [err, msg] = rename (tmp, file);
-  if (err)
-    error ("lafortune:unwritable", "repro_figures: cannot write '%s': %s", file, msg);
-  endif
+  repro_print (h, file, 90, "repro_figures");
 endfunction
