@@ -142,8 +142,11 @@ $(R)/spp/%.json: $(R)/render/%-measured.json $(DEPS_repro_spp)
 $(R)/study/%.json: $(R)/render/%-fits.json $(DEPS_repro_study)
 	@$(call octstep,study,$*)
 
-# the study: STUDY=1, or auto without a MESH
-STUDY_ON := $(if $(filter 1,$(STUDY)),1,$(if $(filter auto,$(STUDY)),$(if $(MESH),,1)))
+# the study: STUDY=1, or auto without a MESH; with QUICK=1, STUDY_QUICK unless
+# STUDY is given on the command line (as repro_config reads them)
+STUDY_EFF := $(if $(filter command line environment,$(origin STUDY)),$(STUDY),$\
+  $(if $(filter 1,$(QUICK)),$(STUDY_QUICK),$(STUDY)))
+STUDY_ON := $(if $(filter 1,$(STUDY_EFF)),1,$(if $(filter auto,$(STUDY_EFF)),$(if $(MESH),,1)))
 STEP_OUT := $(foreach m,$(MATS),$(R)/fit/$(m).json $(R)/render/$(m)-fits.json $(R)/spp/$(m).json \
   $(if $(STUDY_ON),$(R)/study/$(m).json))
 
