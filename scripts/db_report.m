@@ -296,13 +296,17 @@ function plot_psnr (P, c, mats, label, file)
     m = c.methods{i};
     subplot (1, nm, i);
     X = P.(m);
-    for r = 1:rows (X)
-      if (all (isnan (X(r,:))))
-        continue;
-      endif
-      plot (c.lobes, X(r,:), "-o", "linewidth", 1);
+    col = lines (rows (X));
+    ## the names at the line ends, spread apart so that none overlaps
+    ok = find (isfinite (X(:,end)))';
+    ly = spread (X(ok,end), (yl(2) - yl(1)) * 11 / 460, yl);
+    for q = 1:numel (ok)
+      r = ok(q);
+      plot (c.lobes, X(r,:), "-o", "linewidth", 1, "color", col(r,:));
       hold on;
-      text (c.lobes(end) + 0.05, X(r,end), mats{r}, "fontsize", 7, "interpreter", "none");
+      plot ([c.lobes(end), c.lobes(end) + 0.25], [X(r,end), ly(q)], "-", "color", col(r,:));
+      text (c.lobes(end) + 0.3, ly(q), mats{r}, "fontsize", 7, "interpreter", "none",
+            "color", col(r,:) * 0.8);
     endfor
     hold off;
     xlim ([min(c.lobes) - 0.2, max(c.lobes) + 1.2]);
@@ -314,6 +318,24 @@ function plot_psnr (P, c, mats, label, file)
     grid on;
   endfor
   repro_print (h, file, 90, "db_report");
+endfunction
+
+## positions for labels wanted at Y, at least GAP apart, within the limits YL
+function ly = spread (y, gap, yl)
+  [ys, o] = sort (y(:));
+  n = numel (ys);
+  for k = 2:n
+    ys(k) = max (ys(k), ys(k-1) + gap);
+  endfor
+  top = yl(2) - gap / 2;
+  if (n > 0 && ys(n) > top)
+    ys(n) = top;
+    for k = n-1:-1:1
+      ys(k) = min (ys(k), ys(k+1) - gap);
+    endfor
+  endif
+  ly = zeros (n, 1);
+  ly(o) = ys;
 endfunction
 
 function write_gallery (c, D, P, label)
