@@ -99,7 +99,7 @@ function [S, img] = merl_scene (material, scene, varargin)
   npix = H * W;
   spp = scene.spp;
   total = npix * spp;
-  jitter = ! isfield (scene, "jitter") || logical (scene.jitter);
+  jitter = scene_jitter (scene);
 
   ## every lit sample: its pixel and angles (ti, to, gamma) and E cos ti
   chunk = 65536;

@@ -234,11 +234,6 @@ function [img, info] = rt_render (scene, material, varargin)
   endif
 endfunction
 
-## scene.jitter, default true
-function j = scene_jitter (scene)
-  j = ! isfield (scene, "jitter") || isempty (scene.jitter) || logical (scene.jitter);
-endfunction
-
 ## The slice table: radiance at the normals N(theta_h, psi) about the half
 ## vector, through scene_slice.  RM is NH*NPSI x 3 single, column-major
 ## (theta_h fastest).
