@@ -382,8 +382,8 @@ function S = with_prior (S, args)
   endif
   w = S.weight(:);
   k = find (strcmpi (args(1:2:end), "weight"), 1, "last");
-  if (! isempty (k) && strcmpi (args{2*k}, "psnr") && isfield (S, "irradiance"))
-    w .*= mean (S.irradiance .^ 2, 2);
+  if (! isempty (k) && strcmpi (args{2*k}, "psnr"))
+    w = mean (metric_spec ("psnr", S, "lafortune_fit").w, 2);   # weight .* irradiance^2
   endif
   wp = ones (rows (P.wi), 1);
   if (isfield (P, "weight"))
