@@ -47,11 +47,7 @@ function R = db_sheet (material)
       endif
     endfor
   endfor
-  sd = fullfile (c.results, "sheet");
-  if (! isfolder (sd))
-    mkdir (sd);
-  endif
-  file = fullfile (sd, [material ".png"]);
+  file = fullfile (c.results, "sheet", [material ".png"]);   # repro_print makes the folder
   repro_print (h, file, 72, "db_sheet");
   R = struct ("file", fullfile ("sheet", [material ".png"]), "exposure", stops);
 endfunction
