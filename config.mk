@@ -10,8 +10,10 @@
 # materials of `make reproduce` (`make database` takes every *.binary in MERL_DIR)
 MATERIALS ?= green-metallic-paint red-plastic
 # fit methods: inplane = the paper's (plane of incidence), hemisphere = the
-# toolbox's fit of the whole valid hemisphere
-METHODS ?= inplane hemisphere
+# whole valid hemisphere (solid-angle weights), scene = the recommended fit for
+# the best picture (the angle pairs the scene's pixels see, image weights);
+# `make reproduce` needs inplane, `make database` takes any of them
+METHODS ?= inplane hemisphere scene
 LOBES ?= 1 2 3
 # grazing angles beyond this (degrees) are left out of the fits
 MAX_ANGLE ?= 80
@@ -40,7 +42,7 @@ STUDY_QUICK ?= 0
 STUDY_TABLES ?= inplane hemisphere scene
 STUDY_WEIGHTS ?= plain cosine relative log
 STUDY_LIGHT ?= 1 0.3 0.6
-# samples per pixel of the scene table (merl_scene)
+# samples per pixel of the scene table (merl_scene; METHODS scene and the study)
 STUDY_TABLE_SPP ?= 4
 STUDY_TABLE_SPP_QUICK ?= 1
 # POV-Ray anti-aliasing of the fits' renders
@@ -57,3 +59,6 @@ TORUS_QUICK ?= 48 24
 # lobes gains less than FAIL_GAIN dB (as the paper found for red plastic)
 FAIL_PSNR ?= 30
 FAIL_GAIN ?= 0.5
+# ... and a fit method "falls" on a material when one more lobe renders worse
+# by more than FAIL_DROP dB
+FAIL_DROP ?= 0.1

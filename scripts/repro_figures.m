@@ -10,9 +10,9 @@
 ## @item plane-MATERIAL.png (plot_plane; the paper's Fig. 2 and 3): in-plane
 ## data at theta_i = 30 degrees and the 1-, 2-, 3-lobe in-plane fits;
 ## @item renders-MATERIAL.png (plot_renders; Fig. 4 and 5): the measured
-## render and the POV-Ray renders of the fits, in-plane (the paper's method,
-## with the paper's PSNR) and hemisphere fits in two rows, with difference
-## insets and PSNR;
+## render and the POV-Ray renders of the fits, one row per method of
+## METHODS (in-plane: the paper's method, with the paper's PSNR; hemisphere;
+## scene: the recommended fit), with difference insets and PSNR;
 ## @item polar-MATERIAL.png (plot_polar): data and the 3-lobe in-plane fit
 ## in the plane of incidence at theta_i = 15, 30, 45, 60 degrees (log radius:
 ## the grazing lobes would hide the others);
@@ -59,22 +59,25 @@ function repro_figures ()
     rd = fullfile (c.results, "render");
     ref = exrread (fullfile (rd, [mat "-measured-pov.exr"]));   # the fits' renderer and samples
     F = jsondecode (fileread (fullfile (rd, [mat "-fits.json"])));
-    imgs = {ref; ref};
-    psnr = zeros (2, nl);
-    mths = {"inplane", "hemisphere"};
-    for r = 1:2
+    mths = c.methods;
+    nm = numel (mths);
+    imgs = repmat ({ref}, nm, 1);
+    psnr = zeros (nm, nl);
+    for r = 1:nm
       for j = 1:nl
         imgs{r,j+1} = exrread (fullfile (rd, sprintf ("%s-%s-%d.exr", mat, mths{r}, c.lobes(j))));
         psnr(r,j) = F.(mths{r})(j).psnr_pov;
       endfor
     endfor
-    paper = NaN (2, nl);
+    paper = NaN (nm, nl);
     key = strrep (mat, "-", "_");
     if (isfield (c.paper_psnr, key))
-      paper(1,:) = c.paper_psnr.(key)(c.lobes);
+      paper(strcmp (mths, "inplane"),:) = c.paper_psnr.(key)(c.lobes);
     endif
+    rowname = struct ("inplane", "in-plane fits", "hemisphere", "hemisphere fits",
+                      "scene", "scene fits (recommended)");
     done (plot_renders (imgs, [{"measured"}, lobe_names], psnr, "paper", paper,
-                        "rows", {"in-plane fits", "hemisphere fits"},
+                        "rows", cellfun (@(m) rowname.(m), mths, "uniformoutput", false),
                         "width", min (256, max (180, columns (ref))),   # the paper's 256: 1:1
                         "title", sprintf ("%s: POV-Ray, %d x %d, anti-aliasing %d x %d",
                                           mat, columns (ref), rows (ref), c.pov_aa, c.pov_aa),

@@ -7,8 +7,10 @@
 ## writes @var{R} to RESULTS/fit/MATERIAL.json): fit 1 to max(LOBES) lobes
 ## per channel to DATA_DIR/MATERIAL.binary with each method of METHODS:
 ## @code{inplane}, the paper's way (plane of incidence, grazing angles left
-## out), and @code{hemisphere}, the toolbox's fit of the whole valid
-## hemisphere (subsampled); export every model to RESULTS/fit/
+## out), @code{hemisphere}, the whole valid hemisphere (subsampled to
+## HEMI_SAMPLES, weighted by solid angle), and @code{scene}, the recommended
+## fit for the best picture: the angle pairs the scene's pixels see with
+## image weights (@code{lafortune_fit}'s "psnr"), see repro_table; export every model to RESULTS/fit/
 ## MATERIAL-METHOD-K.json, .txt and .brdf (BRDF Explorer).
 ##
 ## @var{R}: @code{lobes}, and per method (@code{R.inplane},
@@ -25,15 +27,12 @@ function R = repro_fit (material)
   warning ("off", "lafortune:notConverged");
   b = merl_read (fullfile (c.data_dir, [material ".binary"]));
   for method = c.methods
-    switch (method{1})
-      case "inplane"
-        S.inplane = merl_plane (b, "max_angle", c.max_angle);
-      case "hemisphere"
-        S.hemisphere = merl_samples (b, "max_angle", c.max_angle, "max_samples", c.hemi_samples);
-      otherwise
-        error ("lafortune:badConfig", "repro_fit: unknown method '%s' in METHODS: expected inplane or hemisphere",
-               method{1});
-    endswitch
+    if (! any (strcmp (method{1}, {"inplane", "hemisphere", "scene"})))
+      error ("lafortune:badConfig",
+             "repro_fit: unknown method '%s' in METHODS: expected inplane, hemisphere or scene",
+             method{1});
+    endif
+    S.(method{1}) = repro_table (b, method{1}, c, c.hemi_samples);
   endfor
   outdir = fullfile (c.results, "fit");
   if (! isfolder (outdir))
@@ -45,7 +44,11 @@ function R = repro_fit (material)
     printf ("reproduce: [%s] fitting 1..%d lobes, %s (%d samples)\n", material,
             max (c.lobes), mth, rows (S.(mth).wi));
     fflush (stdout);
-    [~, info, models] = lafortune_fit (S.(mth), max (c.lobes));
+    w = "plain";
+    if (strcmp (mth, "scene"))
+      w = "psnr";                   # the image's MSE: the recommended fit
+    endif
+    [~, info, models] = lafortune_fit (S.(mth), max (c.lobes), "weight", w);
     r = struct ("samples", rows (S.(mth).wi), "time", info.time,
                 "iterations", info.iterations, "converged", info.converged,
                 "lobe_time", info.lobe_time);

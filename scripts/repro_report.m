@@ -54,8 +54,15 @@ function repro_report ()
   L{end+1} = "";
   L{end+1} = "The paper rendered the Happy Buddha with pbrt; our scene differs (see settings), so compare trends, not decibels.";
   L{end+1} = "";
-  L{end+1} = "| material | lobes | paper | in-plane fit, POV-Ray | in-plane fit, rt_render | hemisphere fit, POV-Ray | rt_render vs POV-Ray (same model) |";
-  L{end+1} = "|---|---|---|---|---|---|---|";
+  need_inplane (c);
+  mlabel = struct ("inplane", "in-plane", "hemisphere", "hemisphere", "scene", "scene (recommended)");
+  others = c.methods(! strcmp (c.methods, "inplane"));
+  hdr = "| material | lobes | paper | in-plane fit, POV-Ray | in-plane fit, rt_render |";
+  for m = others
+    hdr = [hdr sprintf(" %s fit, POV-Ray |", mlabel.(m{1}))];
+  endfor
+  L{end+1} = [hdr " rt_render vs POV-Ray (same model) |"];
+  L{end+1} = ["|---|---|---|---|---|" repmat("---|", 1, numel (others)) "---|"];
   sm.materials = struct ();
   for i = 1:numel (c.materials)
     mat = c.materials{i};
@@ -72,22 +79,24 @@ function repro_report ()
       if (k <= numel (paper) && ! isnan (paper(k)))
         ptxt = sprintf ("%.2f dB", paper(k));
       endif
-      L{end+1} = sprintf ("| %s | %d | %s | %.2f dB | %.2f dB | %.2f dB | %.1f dB |", mat, k, ptxt,
-                          R.inplane(k).psnr_pov, R.inplane(k).psnr_rt, R.hemisphere(k).psnr_pov,
-                          R.inplane(k).renderers_psnr);
+      row = sprintf ("| %s | %d | %s | %.2f dB | %.2f dB |", mat, k, ptxt,
+                     R.inplane(k).psnr_pov, R.inplane(k).psnr_rt);
+      for m = others
+        row = [row sprintf(" %.2f dB |", R.(m{1})(k).psnr_pov)];
+      endfor
+      L{end+1} = [row sprintf(" %.1f dB |", R.inplane(k).renderers_psnr)];
     endfor
     s = struct ();
     s.paper_psnr = paper;
-    s.psnr_inplane_pov = [R.inplane.psnr_pov];
     s.psnr_inplane_rt = [R.inplane.psnr_rt];
-    s.psnr_hemisphere_pov = [R.hemisphere.psnr_pov];
     s.renderers_psnr = [R.inplane.renderers_psnr];
     s.renderers_psnr_measured = M.renderers_psnr;
-    s.fit_rmse_inplane = mean (F.inplane.errors.inplane.rmse, 2)';
     s.fit_rel_rmse_inplane = mean (F.inplane.errors.inplane.rel_rmse, 2)';
-    s.fit_rmse_hemisphere = mean (F.hemisphere.errors.hemisphere.rmse, 2)';
-    s.fit_time_inplane = max (F.inplane.lobe_time, [], 2)';
-    s.fit_time_hemisphere = max (F.hemisphere.lobe_time, [], 2)';
+    for m = c.methods
+      s.(["psnr_" m{1} "_pov"]) = [R.(m{1}).psnr_pov];
+      s.(["fit_rmse_" m{1}]) = mean (F.(m{1}).errors.(m{1}).rmse, 2)';
+      s.(["fit_time_" m{1}]) = max (F.(m{1}).lobe_time, [], 2)';
+    endfor
     s.render_time_measured = M.info.time_total;
     s.render_time_pov = [R.inplane.pov_time];
     s.render_time_rt = [R.inplane.rt_time];
@@ -117,20 +126,30 @@ function repro_report ()
   ## --- fits
   L{end+1} = "## Fits";
   L{end+1} = "";
-  L{end+1} = "Errors are means over R, G, B of per-channel errors; `in-plane` is the paper's table (plane of incidence), `hemisphere` every valid MERL bin (subsampled). Fit time is cumulative: the k-lobe fit grows from the (k-1)-lobe one.";
+  L{end+1} = ["Errors are means over R, G, B of per-channel errors; `in-plane` is the paper's table (plane of incidence), " ...
+              "`hemisphere` every valid MERL bin (subsampled, weighted by solid angle), `scene` the angle pairs the scene's pixels see " ...
+              "(fitted with image weights; its rmse is weighted by each pair's share of the image). " ...
+              "Fit time is cumulative: the k-lobe fit grows from the (k-1)-lobe one."];
   L{end+1} = "";
-  L{end+1} = "| material | fit | lobes | rmse (in-plane table) | relative rmse | log rmse | cosine-weighted rmse | rmse (hemisphere table) | fit time (s) |";
-  L{end+1} = "|---|---|---|---|---|---|---|---|---|";
+  hdr = "| material | fit | lobes | rmse (in-plane table) | relative rmse | log rmse | cosine-weighted rmse |";
+  for m = others
+    hdr = [hdr sprintf(" rmse (%s table) |", m{1})];
+  endfor
+  L{end+1} = [hdr " fit time (s) |"];
+  L{end+1} = ["|---|---|---|---|---|---|---|" repmat("---|", 1, numel (others)) "---|"];
   for i = 1:numel (c.materials)
     mat = c.materials{i};
     F = D.(fieldname (mat)).F;
-    for mth = {"inplane", "hemisphere"}
+    for mth = c.methods
       r = F.(mth{1});
       for k = c.lobes
-        L{end+1} = sprintf ("| %s | %s | %d | %.4g | %.4g | %.4g | %.4g | %.4g | %.2f |", mat, mth{1}, k,
-                            mean (r.errors.inplane.rmse(k,:)), mean (r.errors.inplane.rel_rmse(k,:)),
-                            mean (r.errors.inplane.log_rmse(k,:)), mean (r.errors.inplane.cos_rmse(k,:)),
-                            mean (r.errors.hemisphere.rmse(k,:)), max (r.lobe_time(k,:)));
+        row = sprintf ("| %s | %s | %d | %.4g | %.4g | %.4g | %.4g |", mat, mth{1}, k,
+                       mean (r.errors.inplane.rmse(k,:)), mean (r.errors.inplane.rel_rmse(k,:)),
+                       mean (r.errors.inplane.log_rmse(k,:)), mean (r.errors.inplane.cos_rmse(k,:)));
+        for m = others
+          row = [row sprintf(" %.4g |", mean (r.errors.(m{1}).rmse(k,:)))];
+        endfor
+        L{end+1} = [row sprintf(" %.2f |", max (r.lobe_time(k,:)))];
       endfor
     endfor
   endfor
@@ -214,6 +233,15 @@ function repro_report ()
   repro_save (fullfile (c.results, "summary.json"), sm);
   printf ("reproduce: wrote %s and %s\n", fullfile (c.results, "report.md"),
           fullfile (c.results, "summary.json"));
+endfunction
+
+## the paper's method is the report's first column and its reference
+function need_inplane (c)
+  if (! any (strcmp (c.methods, "inplane")))
+    error ("lafortune:badConfig",
+           "repro_report: METHODS is '%s': make reproduce needs the paper's method, inplane",
+           strjoin (c.methods, " "));
+  endif
 endfunction
 
 function f = fieldname (mat)

@@ -38,22 +38,9 @@ function R = repro_study (material)
   ref_b = pov_render (sb, b, "antialias", c.pov_aa, "threads", c.pov_threads);
 
   ## the tables
-  ts = sa;
-  ts.spp = c.study_table_spp;
   T = struct ();
   for t = c.study_tables
-    switch (t{1})
-      case "inplane"
-        T.inplane = merl_plane (b, "max_angle", c.max_angle);
-      case "hemisphere"
-        T.hemisphere = merl_samples (b, "max_angle", c.max_angle);
-      case "scene"
-        T.scene = merl_scene (b, ts);
-      otherwise
-        error ("lafortune:badConfig",
-               "repro_study: unknown table '%s' in STUDY_TABLES: expected inplane, hemisphere or scene",
-               t{1});
-    endswitch
+    T.(t{1}) = repro_table (b, t{1}, c);
   endfor
   cols = {};
   for t = c.study_tables
@@ -69,12 +56,14 @@ function R = repro_study (material)
   seen = {};
   done = zeros (0, 2);
   F = jsondecode (fileread (fullfile (rd, [material "-fits.json"])));
-  for k = 1:numel (c.lobes)
-    f = fullfile (c.results, "fit", sprintf ("%s-inplane-%d.json", material, c.lobes(k)));
-    if (isfield (F, "inplane") && exist (f, "file"))
-      seen{end+1} = lafortune_import (f);
-      done(end+1,:) = [F.inplane(k).psnr_pov, NaN];
-    endif
+  for m = c.methods
+    for k = 1:numel (c.lobes)
+      f = fullfile (c.results, "fit", sprintf ("%s-%s-%d.json", material, m{1}, c.lobes(k)));
+      if (isfield (F, m{1}) && exist (f, "file"))
+        seen{end+1} = lafortune_import (f);
+        done(end+1,:) = [F.(m{1})(k).psnr_pov, NaN];
+      endif
+    endfor
   endfor
 
   nl = max (c.lobes);

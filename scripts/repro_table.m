@@ -1,0 +1,29 @@
+## Copyright (C) 2026 The lafortune developers
+## SPDX-License-Identifier: GPL-3.0-or-later
+
+## -*- texinfo -*-
+## @deftypefn {} {@var{S} =} repro_table (@var{b}, @var{name}, @var{c}, @var{max_samples})
+## The sample table @var{name} of the BRDF @var{b} for `make reproduce` and
+## `make database` (configuration @var{c} from repro_config):
+## @code{inplane}, the paper's plane of incidence; @code{hemisphere}, every
+## valid bin with its solid-angle weight (at most @var{max_samples}, Inf
+## for all); @code{scene}, the angle pairs the scene's pixels see
+## (@code{merl_scene} of repro_scene's scene at STUDY_TABLE_SPP samples per
+## pixel, with 1% of the whole hemisphere as a prior).  Grazing angles
+## beyond MAX_ANGLE are left out of the first two.
+## @end deftypefn
+function S = repro_table (b, name, c, max_samples = Inf)
+  switch (name)
+    case "inplane"
+      S = merl_plane (b, "max_angle", c.max_angle);
+    case "hemisphere"
+      S = merl_samples (b, "max_angle", c.max_angle, "max_samples", max_samples);
+    case "scene"
+      ts = repro_scene (c);
+      ts.spp = c.study_table_spp;
+      S = merl_scene (b, ts);
+    otherwise
+      error ("lafortune:badConfig",
+             "repro_table: unknown table '%s': expected inplane, hemisphere or scene", name);
+  endswitch
+endfunction
