@@ -8,7 +8,7 @@
 ## STUDY_TABLES (@code{inplane}: the paper's plane of incidence;
 ## @code{hemisphere}: every valid bin with its solid-angle weight;
 ## @code{scene}: the angle pairs the scene's pixels see, @code{merl_scene},
-## from STUDY_TABLE_SPP samples per pixel, with 1% of the whole hemisphere
+## from STUDY_TABLE_SPP samples per pixel, with the whole hemisphere
 ## as a prior) is fitted with every weighting of STUDY_WEIGHTS, 1 to
 ## max (LOBES) lobes, and the scene table also with @code{image} weights
 ## (@code{lafortune_fit}'s "psnr": each pair's share of the image times its

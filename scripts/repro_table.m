@@ -9,7 +9,7 @@
 ## valid bin with its solid-angle weight (at most @var{max_samples}, Inf
 ## for all); @code{scene}, the angle pairs the scene's pixels see
 ## (@code{merl_scene} of repro_scene's scene at STUDY_TABLE_SPP samples per
-## pixel, with 1% of the whole hemisphere as a prior).  Grazing angles
+## pixel, with the whole hemisphere as a weak prior).  Grazing angles
 ## beyond MAX_ANGLE are left out of the first two.
 ## @end deftypefn
 function S = repro_table (b, name, c, max_samples = Inf)
