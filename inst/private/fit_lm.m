@@ -6,7 +6,11 @@
 ## One Levenberg-Marquardt run of leasqr on one channel's data @var{D}
 ## (from fit_data; private), from parameters @var{p0}, with the analytic
 ## Jacobian (or leasqr's dfdp), bounds rho_d >= 0 and 0 <= e <= 1e7 when
-## @code{opt.bounds}, @code{opt.tol} and @code{opt.max_iter}.
+## @code{opt.bounds}, @code{opt.tol} and @code{opt.max_iter}.  When leasqr's
+## handling of the bounds fails (its complementary pivoting can raise "not
+## successful" on a degenerate step), the run is made without bounds and its
+## result clamped to them; when that fails too, @var{p} is @var{p0} and
+## @var{cvg} false.
 ##
 ## With @var{t0} (a @code{tic} value), every evaluation of the model is noted
 ## as a row [seconds since @var{t0}, objective, rmse] of @var{T}: the
@@ -42,7 +46,22 @@ function [p, iter, cvg, T] = fit_lm (D, p0, opt, t0 = [])
   old = verbose;
   verbose = false;
   unwind_protect
-    [~, p, cvg, iter] = quiet_leasqr (D.x, D.ty, p0, F, opt.tol, opt.max_iter, D.w, dp, dFdp, options);
+    try
+      [~, p, cvg, iter] = quiet_leasqr (D.x, D.ty, p0, F, opt.tol, opt.max_iter, D.w, dp, dFdp, options);
+    catch err
+      ## leasqr's handling of bounds (complementary pivoting, cpiv_bard) can
+      ## fail ("not successful") on a degenerate step: run without bounds,
+      ## the result is clamped to them below; failing that, keep the start
+      if (! isfield (options, "bounds"))
+        rethrow (err);
+      endif
+      try
+        [~, p, cvg, iter] = quiet_leasqr (D.x, D.ty, p0, F, opt.tol, opt.max_iter, D.w, dp, dFdp,
+                                          struct ());
+      catch
+        p = p0; cvg = false; iter = 0;
+      end_try_catch
+    end_try_catch
   unwind_protect_cleanup
     if (had)
       verbose = old;
