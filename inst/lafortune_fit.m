@@ -151,8 +151,10 @@
 ## 42.3 / 49.3 / 49.7 dB for 1 / 2 / 3 lobes on green-metallic-paint (the
 ## paper's method: 24.1 / 39.7 / 39.4 dB) and 40.8 / 44.3 / 44.5 dB on
 ## red-plastic (33.4 / 38.2 / 38.8 dB), the best of 13 fits of each
-## material in its scene, and the PSNR does not fall with more lobes (on 26
-## materials either), since the fit's objective is the image's error.  A fit
+## material in its scene, and the PSNR does not fall with more lobes, since
+## the fit's objective is the image's error (except, over 26 materials, on
+## five with highlights sharper than the scene table's cells; see the
+## README).  A fit
 ## made for one scene is for that scene: lit from another direction, green
 ## metallic paint renders at 34.2 / 41.0 / 43.5 dB.  Without a scene, the
 ## whole hemisphere with log weights
