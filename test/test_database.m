@@ -97,7 +97,8 @@
 %!   [st, txt] = __make (top, db, merl, "-j2 database");
 %!   assert (st, 0, txt);
 %!   T = __table (fullfile (db, "table.csv"));
-%!   assert (rows (T), 1 + 2 * 2 * 2 + 1);   # head, 2 materials x 2 methods x 2 lobe counts, 1 error
+%!   assert (rows (T), 1 + 2 * 3 * 2 + 1);   # head, 2 materials x 3 methods x 2 lobe counts, 1 error
+%!   assert (nnz (strcmp (T(:,2), "scene")), 2 * 2);   # the recommended fit is a method
 %!   k = strcmp (T(:,1), "truncated");
 %!   assert (nnz (k), 1);
 %!   assert (T{k,4}, "error");
@@ -105,6 +106,10 @@
 %!   assert (all (strcmp (T(! k & ! strcmp (T(:,1), "material"),4), "ok")));
 %!   rep = fileread (fullfile (db, "report.md"));
 %!   assert (! isempty (strfind (rep, "**truncated**: fit: merl_read")));
+%!   ## each method's materials whose render falls with one more lobe
+%!   assert (numel (regexp (rep, "; more lobes render worse: ")), 3);
+%!   S = jsondecode (fileread (fullfile (db, "summary.json")));
+%!   assert (isfield (S.methods.scene, "largest_drop") && S.methods.scene.largest_drop >= 0);
 %!   assert (! isempty (regexp (rep, "\\| in-plane \\(the paper's method\\) \\| 2 \\| \\d+\\.\\d\\d \\|")));
 %!   for f = {"figures/psnr-lobes.png", "gallery/index.html", "summary.json", ...
 %!            "materials/red-plastic/sheet/red-plastic.png", ...
