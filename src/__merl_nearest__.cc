@@ -17,6 +17,8 @@
 
 #include <octave/oct.h>
 
+#include "oct_guard.h"
+
 #include <cmath>
 #include <cstdint>
 #include <algorithm>
@@ -364,9 +366,8 @@ rgb = __merl_nearest__ (b.data, b.valid, [0 0 1], [0 0.6 0.8])
   const NDArray wo = args(3).array_value ();
   const octave_idx_type n = wi.rows ();
 
-  std::string err;
   octave_value_list retval (nargout > 1 ? (nargout > 2 ? 3 : 2) : 1);
-  try
+  oct_guard ("__merl_nearest__", [&] ()
     {
       NDArray rgb (dim_vector (n, 3));
       boolNDArray ok (dim_vector (nargout > 1 ? n : 0, 1));
@@ -387,22 +388,7 @@ rgb = __merl_nearest__ (b.data, b.valid, [0 0 1], [0 0.6 0.8])
         retval(1) = ok;
       if (nargout > 2)
         retval(2) = idx;
-    }
-  catch (const std::bad_alloc&)
-    {
-      err = "out of memory";
-    }
-  catch (const std::exception& e)
-    {
-      err = e.what ();
-    }
-  catch (...)
-    {
-      err = "unknown error";
-    }
-  if (! err.empty ())
-    error_with_id (err == "out of memory" ? "lafortune:outOfMemory" : "lafortune:badInput",
-                   "__merl_nearest__: %s", err.c_str ());
+    });
   return retval;
 }
 

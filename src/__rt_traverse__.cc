@@ -12,6 +12,8 @@
 
 #include <octave/oct.h>
 
+#include "oct_guard.h"
+
 #include <cmath>
 #include <exception>
 #include <limits>
@@ -273,9 +275,8 @@ b = rt_bvh ([0 0 0; 1 0 0; 0 1 0], [1 2 3]);
   const NDArray tmin = args(6).array_value ();
   const NDArray tmax = args(7).array_value ();
 
-  std::string err;
   octave_value_list retval (4);
-  try
+  oct_guard ("__rt_traverse__", [&] ()
     {
       tree b;
       b.box = boxes.data ();
@@ -321,22 +322,7 @@ b = rt_bvh ([0 0 0; 1 0 0; 0 1 0], [1 2 3]);
       retval(1) = prim;
       retval(2) = u;
       retval(3) = v;
-    }
-  catch (const std::bad_alloc&)
-    {
-      err = "out of memory";
-    }
-  catch (const std::exception& e)
-    {
-      err = e.what ();
-    }
-  catch (...)
-    {
-      err = "unknown error";
-    }
-  if (! err.empty ())
-    error_with_id (err == "out of memory" ? "lafortune:outOfMemory" : "lafortune:badInput",
-                   "__rt_traverse__: %s", err.c_str ());
+    });
   return retval;
 }
 

@@ -1,0 +1,46 @@
+// Copyright (C) 2026 The lafortune developers
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// oct_guard (WHO, WORK): run an oct-file's WORK (a callable) so that no C++
+// exception leaves the oct-file (an oct-file never crashes Octave): running
+// out of memory becomes the Octave error lafortune:outOfMemory, any other
+// exception lafortune:badInput, with the message "WHO: what went wrong".
+// Shared by the compiled inner loops (__merl_nearest__, __rt_traverse__).
+
+#ifndef LAFORTUNE_OCT_GUARD_H
+#define LAFORTUNE_OCT_GUARD_H
+
+#include <octave/oct.h>
+
+#include <exception>
+#include <new>
+#include <string>
+
+template <typename F>
+void
+oct_guard (const char *who, F work)
+{
+  std::string err;
+  try
+    {
+      work ();
+    }
+  catch (const std::bad_alloc&)
+    {
+      err = "out of memory";
+    }
+  catch (const std::exception& e)
+    {
+      err = e.what ();
+    }
+  catch (...)
+    {
+      err = "unknown error";
+    }
+  // raised outside the handlers, so that Octave's own error is not caught
+  if (! err.empty ())
+    error_with_id (err == "out of memory" ? "lafortune:outOfMemory" : "lafortune:badInput",
+                   "%s: %s", who, err.c_str ());
+}
+
+#endif
