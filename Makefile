@@ -71,7 +71,8 @@ check: deps dist
 
 bench: deps
 	$(MAKE) -C src
-	@for b in scripts/bench_*.m; do echo "== $$b"; $(OCT) --path src $$b || exit 1; echo; done
+	@for b in $(filter-out scripts/bench_data.m,$(wildcard scripts/bench_*.m)); do \
+	  echo "== $$b"; $(OCT) --path src $$b || exit 1; echo; done
 
 # ---- configuration: the one list of materials and settings, also read by
 # the Octave steps (scripts/repro_config.m); override any value on the command

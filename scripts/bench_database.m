@@ -34,7 +34,9 @@ function [wall, S] = run_db (top, merl, jobs, args)
   unlink ([db ".log"]);
 endfunction
 
-top = fullfile (fileparts (mfilename ("fullpath")), "..");
+here = fileparts (mfilename ("fullpath"));
+addpath (here);                           # bench_data
+top = fullfile (here, "..");
 merl = getenv ("BENCH_MERL_DIR");
 if (isempty (merl))
   merl = fileparts (bench_data ("red-plastic"));
