@@ -44,13 +44,7 @@ function p = progress_line (p, fraction, elapsed)
   endif
   if (ischar (fraction))                # "done"
     if (p.printed)
-      txt = sprintf ("%s: 100%% done in %.1f s", p.name, elapsed);
-      if (p.tty)
-        fprintf ("\r%s          \n", txt);
-      else
-        fprintf ("%s\n", txt);
-      endif
-      fflush (stdout);
+      emit (p.tty, sprintf ("%s: 100%% done in %.1f s", p.name, elapsed), "          \n");
     endif
     return;
   endif
@@ -67,14 +61,8 @@ function p = progress_line (p, fraction, elapsed)
   if (! due)
     return;
   endif
-  txt = sprintf ("%s: %3.0f%% done, %5.0f s left", p.name, 100 * fraction,
-                 elapsed * (1 - fraction) / fraction);
-  if (p.tty)
-    fprintf ("\r%s ", txt);
-  else
-    fprintf ("%s\n", txt);
-  endif
-  fflush (stdout);
+  emit (p.tty, sprintf ("%s: %3.0f%% done, %5.0f s left", p.name, 100 * fraction,
+                        elapsed * (1 - fraction) / fraction), " ");
   p.last = elapsed;
   p.decile = max (p.decile, decile);
   p.printed = true;
@@ -87,4 +75,15 @@ function tty = on_terminal ()
     cached = ! isguirunning () && system ("test -t 1", false) == 0;
   endif
   tty = cached;
+endfunction
+
+## One line: on a terminal rewritten in place (a carriage return first, then
+## TTY_END), else a line of its own.
+function emit (tty, txt, tty_end)
+  if (tty)
+    fprintf ("\r%s%s", txt, tty_end);
+  else
+    fprintf ("%s\n", txt);
+  endif
+  fflush (stdout);
 endfunction
