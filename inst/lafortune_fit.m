@@ -111,7 +111,9 @@
 ## @var{info} holds @code{n} (samples), @code{groups} (how many the fit
 ## ran on) and @code{reduce} (@code{"exact"} or @code{"grid N"}), and per
 ## channel (1 x 3 arrays, each a mean weighted by @code{S.weight}, on all
-## samples, equal to @code{lafortune_error}'s values):
+## samples of @var{S}, a scene table's prior not included, with the models
+## evaluated as @code{lafortune_eval} does, 0 on or below the horizon:
+## equal to @code{lafortune_error}'s values):
 ## @code{rmse} ("plain"), @code{rel_rmse} (rmse / rms of the data),
 ## @code{log_rmse} ("log"), @code{cos_rmse} ("cosine"; NaN when
 ## @code{S.measure} is already Ngan's cosine measure), @code{error} (the
@@ -181,8 +183,6 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
   if (nargin < 2)
     print_usage ();
   endif
-  S = with_prior (S, varargin);
-  [S, wt] = check_samples (S);
   if (! (isnumeric (nlobes) && isscalar (nlobes) && nlobes == fix (nlobes)
          && nlobes >= 1 && nlobes <= 8))
     error ("lafortune:badLobes", "lafortune_fit: NLOBES must be an integer from 1 to 8, got %s",
@@ -194,13 +194,21 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
                             "start", [], "init", "grow", "jacobian", "analytic",
                             "bounds", true, "channels", 1:3));
   opt = check_opts (opt, nlobes);
+  [S, n0] = with_prior (S, opt.weight);
+  [S, wt] = check_samples (S);
   pkg_load_optim ();
 
   N = rows (S.wi);
   xall = [S.wi(:,1) .* S.wo(:,1) + S.wi(:,2) .* S.wo(:,2), S.wi(:,3) .* S.wo(:,3)];
-  ## the metrics as lafortune_error defines them (metric_spec), on all samples
-  ## in the data's units: what info reports
-  [rep, names] = report_specs (S, opt.weight);
+  ## the metrics as lafortune_error defines them (metric_spec), on the table
+  ## as given (without a scene table's prior; rows 1..n0), in the data's
+  ## units: what info reports
+  Srep = rows_of (S, (1:N)' <= n0);
+  [rep, names] = report_specs (Srep, opt.weight);
+  pall = rep.plain;                     # plain, on every row the fit sees
+  if (n0 < N)
+    pall = metric_spec ("plain", S, "lafortune_fit");
+  endif
   ## a sample of weight 0 is left out of the fit; the data are divided by
   ## their largest magnitude per channel, so that nothing in the fit depends
   ## on the data's units
@@ -211,8 +219,8 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
   sc(! (sc > 0)) = 1;
   Ss = Sf;
   Ss.rgb = Sf.rgb ./ sc;
-  fspec = metric_spec (opt.weight, Ss, "lafortune_fit", rep.plain.delta ./ sc);
-  pspec = rep.plain;
+  fspec = metric_spec (opt.weight, Ss, "lafortune_fit", pall.delta ./ sc);
+  pspec = pall;
   if (! all (keep))
     pspec.w = pspec.w(keep,:);
     pspec.ty = pspec.ty(keep,:);
@@ -240,14 +248,6 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
                  "rejected", zeros (1, 3), "converged", true (1, 3), "time", zeros (1, 3),
                  "trace", {cell(1, 3)}, "history", nan (nlobes, 3),
                  "lobe_time", nan (nlobes, 3));
-  ## per metric, the 1 x 3 sums of squares of the fitted model on all samples
-  ## (a channel not fitted has the zero model); hss: the plain sums per lobe count
-  zero = zeros (N, 1);
-  for i = 1:numel (names)
-    ss.(names{i}) = [rep.(names{i}).ss(zero, 1), rep.(names{i}).ss(zero, 2), rep.(names{i}).ss(zero, 3)];
-  endfor
-  ss0 = ss.plain;
-  hss = nan (nlobes, 3);
   traces = cell (1, 3);
   for c = opt.channels(:)'
     t0 = tic ();
@@ -276,21 +276,12 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
     else
       ch = fit_channel (D, R, nlobes, opt, G);
     endif
-    p = fit_unscale (ch.p, sc(c));
-    model = set_params (model, c, p);
     for k = 1:numel (ch.ps)
-      if (! isempty (ch.ps{k}) && k < nlobes)
-        pk = fit_unscale (ch.ps{k}, sc(c));
-        models{k} = set_params (models{k}, c, pk);
-        hss(k,c) = rep.plain.ss (lafortune_core (pk, xall(:,1), xall(:,2)), c);
+      if (! isempty (ch.ps{k}))
+        models{k} = set_params (models{k}, c, fit_unscale (ch.ps{k}, sc(c)));
       endif
     endfor
-    f = lafortune_core (p, xall(:,1), xall(:,2));
-    for i = 1:numel (names)
-      ss.(names{i})(c) = rep.(names{i}).ss (f, c);
-    endfor
-    hss(nlobes,c) = ss.plain(c);
-    models{nlobes} = set_params (models{nlobes}, c, p);
+    model = models{nlobes};
     info.time(c) = toc (t0);
     info.iterations(c) = ch.iter;
     info.full_iterations(c) = ch.full_iter;
@@ -304,12 +295,26 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
                c, nlobes, opt.max_iter);
     endif
   endfor
-  ## the reported errors: lafortune_error's values (metric_spec's finish)
+  ## the reported errors: lafortune_error's values (metric_spec's finish) of
+  ## the models evaluated as it evaluates them (lafortune_eval: 0 on or below
+  ## the horizon); a channel not fitted has the zero model
+  ss0 = arrayfun (@(c) rep.plain.ss (zeros (rows (Srep.wi), 1), c), 1:3);
+  ss = channel_ss (rep, names, lafortune_eval (model, Srep.wi, Srep.wo));
+  hss = nan (nlobes, 3);
+  hss(nlobes,:) = ss.plain;
+  if (strcmp (opt.init, "grow") && isempty (opt.start))
+    for k = 1:nlobes-1
+      hss(k,:) = channel_ss (rep, {"plain"}, lafortune_eval (models{k}, Srep.wi, Srep.wo)).plain;
+    endfor
+  endif
   fitted = false (1, 3);
   fitted(opt.channels) = true;
   info = report_errors (info, rep, ss, ss0, hss, fitted, opt.weight);
+  ## (with a prior the trace's rows are on every fitted row: the last row is
+  ## then the table's rmse)
   for c = opt.channels(:)'
-    info.trace{c} = best_trace (traces{c}, info.time(c), info.rmse(c), strcmp (info_reduce, "exact"));
+    info.trace{c} = best_trace (traces{c}, info.time(c), info.rmse(c),
+                                strcmp (info_reduce, "exact") && n0 >= N);
   endfor
   if (! strcmp (opt.init, "grow") || ! isempty (opt.start))
     models = {model};
@@ -345,6 +350,14 @@ function info = report_errors (info, rep, ss, ss0, hss, fitted, weight)
   endfor
 endfunction
 
+## The 1 x 3 sums of squares SS.(name) of the model values F (N x 3) for
+## each metric of NAMES, with the specs REP
+function ss = channel_ss (rep, names, F)
+  for i = 1:numel (names)
+    ss.(names{i}) = arrayfun (@(c) rep.(names{i}).ss (F(:,c), c), 1:3);
+  endfor
+endfunction
+
 ## E with NaN where FITTED is false (channels not fitted)
 function e = ifelse_nan (e, fitted)
   e(! fitted) = NaN;
@@ -375,7 +388,8 @@ endfunction
 ## light) fixes gamma = angle (L, V), where a lobe's base is
 ## Cxy cos gamma + (Cz - Cxy) uz vz: the scene's pixels determine only two
 ## combinations of a lobe's three parameters, and the prior the third.
-function S = with_prior (S, args)
+function [S, n0] = with_prior (S, weight)
+  n0 = Inf;
   if (! isstruct (S) || ! isscalar (S) || ! isfield (S, "prior") || isempty (S.prior))
     return;
   endif
@@ -391,10 +405,10 @@ function S = with_prior (S, args)
     return;
   endif
   w = S.weight(:);
-  k = find (strcmpi (args(1:2:end), "weight"), 1, "last");
-  if (! isempty (k) && strcmpi (args{2*k}, "psnr"))
+  if (strcmp (weight, "psnr"))
     w = mean (metric_spec ("psnr", S, "lafortune_fit").w, 2);   # weight .* irradiance^2
   endif
+  n0 = rows (S.wi);
   wp = ones (rows (P.wi), 1);
   if (isfield (P, "weight"))
     wp = P.weight(:);

@@ -152,3 +152,28 @@
 %!error <"psnr" needs a scene table> lafortune_fit (__plane (truth, 8), 1, "weight", "psnr")
 %!error id=lafortune:badMetric lafortune_fit (setfield (__plane (truth, 8), "measure", "cosine"), 1, "weight", "cosine")
 %!error id=lafortune:badOption lafortune_fit (__plane (truth, 8), 1, "weight", "psnr2")
+
+%!test
+%! ## a scene table with a prior: the reported errors are on the table itself,
+%! ## as lafortune_error has them (the prior is only in the fit)
+%! warning ("off", "lafortune:notConverged", "local");
+%! S = __scene (truth, 8, 7);
+%! P = __plane (truth, 5);
+%! S.prior = struct ("wi", P.wi, "wo", P.wo, "rgb", 1.3 * P.rgb);
+%! S.prior_weight = 0.5;
+%! [m, info, ms] = lafortune_fit (S, 2, "weight", "psnr");
+%! T = rmfield (S, {"prior", "prior_weight"});
+%! assert (info.error, lafortune_error (m, T, "psnr"), 1e-10);
+%! assert (info.rmse, lafortune_error (m, T, "plain"), 1e-12 * max (info.rmse));
+%! assert (info.history(1,:), lafortune_error (ms{1}, T, "plain"), 1e-12 * max (info.rmse));
+%! assert (info.trace{1}(end,2), info.rmse(1), 1e-12);
+
+%!test
+%! ## samples on the horizon: 0 in the reported errors, as lafortune_eval has it
+%! warning ("off", "lafortune:notConverged", "local");
+%! [TI, TO] = ndgrid (0:5:90, -90:5:90);
+%! wi = [sind(TI(:)) 0*TI(:) cosd(TI(:))];
+%! wo = [sind(TO(:)) 0*TO(:) cosd(TO(:))];
+%! S = struct ("wi", wi, "wo", wo, "rgb", lafortune_eval (truth, wi, wo) + 0.01);
+%! [m, info] = lafortune_fit (S, 1);
+%! assert (info.rmse, lafortune_error (m, S, "plain"), 1e-12 * max (info.rmse));
