@@ -36,7 +36,7 @@ function db_report ()
     root = fullfile (c.results, "materials", mats{i});
     rec = struct ();
     for s = steps
-      f = step_file (root, s{1}, mats{i});
+      f = repro_step ("output", s{1}, mats{i}, root);
       if (! exist (f, "file"))
         rec.(s{1}) = struct ("status", "error", "error", ["no record " f], "time", NaN);
       else
@@ -243,19 +243,6 @@ function db_report ()
   write_gallery (c, D, P, label);
   printf ("database: %d materials (%d failed): %s\n", numel (mats), numel (bad),
           fullfile (c.results, "report.md"));
-endfunction
-
-function f = step_file (root, step, mat)
-  switch (step)
-    case "fit"
-      f = fullfile (root, "fit", [mat ".json"]);
-    case "render_measured"
-      f = fullfile (root, "render", [mat "-measured.json"]);
-    case "render_fits"
-      f = fullfile (root, "render", [mat "-fits.json"]);
-    case "sheet"
-      f = fullfile (root, "sheet", [mat ".json"]);
-  endswitch
 endfunction
 
 function s = label_of (label, m)

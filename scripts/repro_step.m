@@ -4,6 +4,7 @@
 ## -*- texinfo -*-
 ## @deftypefn  {} {} repro_step (@var{step}, @var{material})
 ## @deftypefnx {} {@var{file} =} repro_step ("output", @var{step}, @var{material})
+## @deftypefnx {} {@var{file} =} repro_step ("output", @var{step}, @var{material}, @var{root})
 ## Run one per-material step of `make reproduce` / `make database` and write
 ## its record, RESULTS/STEPDIR/MATERIAL*.json, atomically (the Make target).
 ##
@@ -26,7 +27,12 @@
 ## @end deftypefn
 function out = repro_step (step, material, varargin)
   if (strcmp (step, "output"))
-    out = output_file (repro_config (), material, varargin{1});
+    if (nargin > 3)
+      root = varargin{2};                 # a material's folder of make database
+    else
+      root = repro_config ().results;
+    endif
+    out = output_file (root, material, varargin{1});
     return;
   endif
   c = repro_config ();
@@ -42,11 +48,11 @@ function out = repro_step (step, material, varargin)
   endif
   fn = steps.(step){1};
   up = steps.(step){2};
-  rec = output_file (c, step, material);
+  rec = output_file (c.results, step, material);
   t0 = tic ();
   try
     for i = 1:numel (up)
-      f = output_file (c, up{i}, material);
+      f = output_file (c.results, up{i}, material);
       if (! exist (f, "file"))
         error ("lafortune:upstreamFailed", "the %s step has no record %s", up{i}, f);
       endif
@@ -77,20 +83,20 @@ function out = repro_step (step, material, varargin)
   repro_save (rec, R);
 endfunction
 
-function f = output_file (c, step, material)
+function f = output_file (root, step, material)
   switch (step)
     case "fit"
-      f = fullfile (c.results, "fit", [material ".json"]);
+      f = fullfile (root, "fit", [material ".json"]);
     case "render_measured"
-      f = fullfile (c.results, "render", [material "-measured.json"]);
+      f = fullfile (root, "render", [material "-measured.json"]);
     case "render_fits"
-      f = fullfile (c.results, "render", [material "-fits.json"]);
+      f = fullfile (root, "render", [material "-fits.json"]);
     case "spp"
-      f = fullfile (c.results, "spp", [material ".json"]);
+      f = fullfile (root, "spp", [material ".json"]);
     case "study"
-      f = fullfile (c.results, "study", [material ".json"]);
+      f = fullfile (root, "study", [material ".json"]);
     case "sheet"
-      f = fullfile (c.results, "sheet", [material ".json"]);
+      f = fullfile (root, "sheet", [material ".json"]);
     otherwise
       error ("lafortune:badStep", "repro_step: unknown step '%s'", step);
   endswitch
