@@ -6,7 +6,8 @@
 ## Gallery step of `make database` (run by repro_step, which writes @var{R}
 ## to RESULTS/sheet/MATERIAL.json): the material's contact sheet
 ## RESULTS/sheet/MATERIAL.png, one row per fit method (in-plane: the
-## paper's, hemisphere: the toolbox's), the measured-data render first and
+## paper's, hemisphere, scene: the recommended), the measured data rendered
+## by POV-Ray (the reference of the fits' PSNR) first and
 ## then the render of each lobe count, titled METHOD K: PSNR, all at the
 ## measured render's exposure.  @var{R}: @code{file} (the PNG's name,
 ## relative to RESULTS) and @code{exposure} (stops).
@@ -16,7 +17,7 @@ function R = db_sheet (material)
   warning ("off", "Octave:gnuplot-graphics");
   graphics_toolkit ("gnuplot");
   rd = fullfile (c.results, "render");
-  ref = exrread (fullfile (rd, [material "-measured.exr"]));
+  ref = exrread (fullfile (rd, [material "-measured-pov.exr"]));   # the fits' renderer: their PSNR's reference
   fits = jsondecode (fileread (fullfile (rd, [material "-fits.json"])));
   [rgb, stops] = img_tonemap (ref, "auto");
   nm = numel (c.methods);
