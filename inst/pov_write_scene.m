@@ -172,7 +172,7 @@ function info = pov_write_scene (scene, material, file, varargin)
   V = -cam.f;
 
   ## what the view reaches
-  if (opt.crop || opt.cull)
+  if (opt.crop || opt.cull || persp)     # the gamma levels need the points too
     S = pov_cast (scene, cam, L);
   endif
   top = pi/2 - 1e-6;             # scene_slice is 0 from pi/2 on
@@ -771,6 +771,17 @@ endfunction
 %!       endif
 %!     endif
 %!   endfor
+%! unwind_protect_cleanup
+%!   unlink (f);
+%! end_unwind_protect
+
+%!test
+%! ## a perspective camera with neither cropping nor culling still writes
+%! f = [tempname() ".pov"];
+%! unwind_protect
+%!   sp = scene_make ("sphere", "size", 16, "camera", "perspective");
+%!   info = pov_write_scene (sp, m, f, "crop", false, "cull", false);
+%!   assert (exist (f, "file") == 2 && info.bytes > 0);
 %! unwind_protect_cleanup
 %!   unlink (f);
 %! end_unwind_protect
