@@ -27,7 +27,7 @@ function R = repro_fit (material)
   warning ("off", "lafortune:notConverged");
   b = merl_read (fullfile (c.data_dir, [material ".binary"]));
   for method = c.methods
-    S.(method{1}) = repro_table (b, method{1}, c, c.hemi_samples);   # (an unknown name is an error there)
+    [S.(method{1}), W.(method{1})] = repro_table (b, method{1}, c, c.hemi_samples);   # (an unknown name is an error there)
   endfor
   outdir = fullfile (c.results, "fit");
   if (! isfolder (outdir))
@@ -39,11 +39,7 @@ function R = repro_fit (material)
     printf ("reproduce: [%s] fitting 1..%d lobes, %s (%d samples)\n", material,
             max (c.lobes), mth, rows (S.(mth).wi));
     fflush (stdout);
-    w = "plain";
-    if (strcmp (mth, "scene"))
-      w = "psnr";                   # the image's MSE: the recommended fit
-    endif
-    [~, info, models] = lafortune_fit (S.(mth), max (c.lobes), "weight", w);
+    [~, info, models] = lafortune_fit (S.(mth), max (c.lobes), "weight", W.(mth));
     r = struct ("samples", rows (S.(mth).wi), "time", info.time,
                 "iterations", info.iterations, "converged", info.converged,
                 "lobe_time", info.lobe_time);

@@ -2,7 +2,7 @@
 ## SPDX-License-Identifier: GPL-3.0-or-later
 
 ## -*- texinfo -*-
-## @deftypefn {} {@var{S} =} repro_table (@var{b}, @var{name}, @var{c}, @var{max_samples})
+## @deftypefn {} {[@var{S}, @var{weight}] =} repro_table (@var{b}, @var{name}, @var{c}, @var{max_samples})
 ## The sample table @var{name} of the BRDF @var{b} for `make reproduce` and
 ## `make database` (configuration @var{c} from repro_config):
 ## @code{inplane}, the paper's plane of incidence; @code{hemisphere}, every
@@ -10,9 +10,13 @@
 ## for all); @code{scene}, the angle pairs the scene's pixels see
 ## (@code{merl_scene} of repro_scene's scene at STUDY_TABLE_SPP samples per
 ## pixel, with the whole hemisphere as a weak prior).  Grazing angles
-## beyond MAX_ANGLE are left out of the first two.
+## beyond MAX_ANGLE are left out of the first two.  @var{weight}: the
+## weighting of the fit step's method of that name (@code{lafortune_fit}'s
+## "weight"): "psnr", the image's error, for the scene table (the
+## recommended fit), else "plain" (the paper's).
 ## @end deftypefn
-function S = repro_table (b, name, c, max_samples = Inf)
+function [S, weight] = repro_table (b, name, c, max_samples = Inf)
+  weight = "plain";
   switch (name)
     case "inplane"
       S = merl_plane (b, "max_angle", c.max_angle);
@@ -22,6 +26,7 @@ function S = repro_table (b, name, c, max_samples = Inf)
       ts = repro_scene (c);
       ts.spp = c.study_table_spp;
       S = merl_scene (b, ts);
+      weight = "psnr";
     otherwise
       error ("lafortune:badConfig",
              "repro_table: unknown table '%s': expected inplane, hemisphere or scene", name);
