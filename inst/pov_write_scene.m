@@ -237,19 +237,20 @@ function info = pov_write_scene (scene, material, file, varargin)
   D = cell (ng, nt);
   contrib = zeros (1, nt);
   peak = 0;
+  ## the whole material on a common grid, for its largest radiance
+  t = linspace (rng_i(1), rng_i(2), 129);
+  u = linspace (rng_o(1), rng_o(2), 129);
+  reach = true;
+  if (! isempty (samp))
+    reach = reach_mask (samp, t', u', opt.pad);
+  endif
   for g = 1:ng
     sg = view_at_gamma (scene, L, gl(g));
     for q = 1:nt
       D{g,q} = term_grid (sg, terms{q}, rng_i, rng_o, n, samp, opt, gl(g));
       contrib(q) = max (contrib(q), D{g,q}.max);
     endfor
-    ## the whole material on a common grid, for its largest radiance
-    t = linspace (rng_i(1), rng_i(2), 129);
-    u = linspace (rng_o(1), rng_o(2), 129);
-    Mc = u >= abs (t' - gl(g)) & u <= min (t' + gl(g), 2 * pi - t' - gl(g));
-    if (! isempty (samp))
-      Mc &= reach_mask (samp, t', u', opt.pad);
-    endif
+    Mc = u >= abs (t' - gl(g)) & u <= min (t' + gl(g), 2 * pi - t' - gl(g)) & reach;
     peak = max ([peak, contrib, masked_max(scene_slice (sg, material, t, u), Mc)]);
   endfor
   if (peak > 0)
@@ -478,10 +479,8 @@ function D = term_grid (scene, term, rng_i, rng_o, n, samp, opt, gam)
   ## the largest radiance where a normal really reaches (no padding): past
   ## the boundary scene_slice's clamped configurations are not the scene's
   ## and a sharp lobe may be huge there
+  ## and what the view reaches: M (on this grid) has it
   M0 = to' >= abs (ti - gam) & to' <= min (ti + gam, 2 * pi - ti - gam);
-  if (! isempty (samp))
-    M0 &= reach_mask (samp, ti, to, opt.pad);
-  endif
   D.max = masked_max (R, M0 & M);
   ## the padding and the continuation only serve the interpolation: no entry
   ## above 10 times the term's largest radiance in the view (the file then
