@@ -289,6 +289,13 @@ endfunction
 %! s = scene_make ("sphere", "size", [24 32], "spp", 1);
 
 %!test
+%! ## the samples do not depend on how many rays are traced at once
+%! sc = scene_make ("sphere", "size", [24 12], "spp", 3);
+%! m = struct ("rho_d", [0.2 0.2 0.2], "Cxy", [-1 -1 -1], "Cz", [1 1 1], "e", [30 30 30]);
+%! assert (rt_render (sc, m, "chunk", 100, "progress", false),
+%!         rt_render (sc, m, "progress", false), 1e-12);
+
+%!test
 %! ## Lambertian sphere: closed form per pixel at the pixel centres
 %! [img, info] = rt_render (s, lam, "jitter", false, "progress", false);
 %! assert (info.mode, "slice");

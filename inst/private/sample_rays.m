@@ -8,12 +8,14 @@
 ## places in their cells (@code{rand}, whose state the caller seeds with
 ## @code{scene.seed}) when @var{jitter}, else at the cell centres (private,
 ## for @code{rt_render} and @code{merl_scene}, so both take the same
-## samples).
+## samples).  Sample k gets the k-th pair of the random stream, so that the
+## samples do not depend on how many are traced at once (rt_render's
+## "chunk", merl_scene's own).
 ## @end deftypefn
 function [O, D] = sample_rays (scene, cam, k, jitter)
   m = numel (k);
   if (jitter)
-    j = rand (m, 2);
+    j = rand (2, m).';     # sample k: the stream's pair k, whatever the chunk
   else
     j = 0.5 * ones (m, 2);
   endif
