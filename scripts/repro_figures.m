@@ -70,10 +70,7 @@ function repro_figures ()
       endfor
     endfor
     paper = NaN (nm, nl);
-    key = strrep (mat, "-", "_");
-    if (isfield (c.paper_psnr, key))
-      paper(strcmp (mths, "inplane"),:) = c.paper_psnr.(key)(c.lobes);
-    endif
+    paper(strcmp (mths, "inplane"),:) = repro_paper (c, mat);
     rowname = struct ("inplane", "in-plane fits", "hemisphere", "hemisphere fits",
                       "scene", "scene fits (recommended)");
     done (plot_renders (imgs, [{"measured"}, lobe_names], psnr, "paper", paper,
@@ -114,10 +111,9 @@ function study_figure (c, mat, file)
       P{t}(strcmp (weights, m.weight),:) = m.psnr_a(:)';
     endfor
   endfor
-  paper = [];
-  key = strrep (mat, "-", "_");
-  if (isfield (c.paper_psnr, key))
-    paper = c.paper_psnr.(key);
+  paper = repro_paper (c, mat);
+  if (all (isnan (paper)))
+    paper = [];                     # no dashed line and no key for it
   endif
   names = strrep (strrep (tables, "inplane", "in-plane table"), "hemisphere", "hemisphere table");
   names = strrep (names, "scene", "scene table");

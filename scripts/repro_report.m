@@ -70,21 +70,19 @@ function repro_report ()
     F = jsondecode (fileread (fullfile (c.results, "fit", [mat ".json"])));
     P = jsondecode (fileread (fullfile (c.results, "spp", [mat ".json"])));
     M = jsondecode (fileread (fullfile (c.results, "render", [mat "-measured.json"])));
-    paper = nan (1, max (c.lobes));       # a material the paper did not fit
-    if (isfield (c.paper_psnr, fieldname (mat)))
-      paper = c.paper_psnr.(fieldname (mat));
-    endif
-    for k = c.lobes
+    paper = repro_paper (c, mat);
+    for j = 1:numel (c.lobes)
+      k = c.lobes(j);
       ptxt = "-";
-      if (k <= numel (paper) && ! isnan (paper(k)))
-        ptxt = sprintf ("%.2f dB", paper(k));
+      if (! isnan (paper(j)))
+        ptxt = sprintf ("%.2f dB", paper(j));
       endif
       row = sprintf ("| %s | %d | %s | %.2f dB | %.2f dB |", mat, k, ptxt,
-                     R.inplane(k).psnr_pov, R.inplane(k).psnr_rt);
+                     R.inplane(j).psnr_pov, R.inplane(j).psnr_rt);
       for m = others
-        row = [row sprintf(" %.2f dB |", R.(m{1})(k).psnr_pov)];
+        row = [row sprintf(" %.2f dB |", R.(m{1})(j).psnr_pov)];
       endfor
-      L{end+1} = [row sprintf(" %.1f dB |", R.inplane(k).renderers_psnr)];
+      L{end+1} = [row sprintf(" %.1f dB |", R.inplane(j).renderers_psnr)];
     endfor
     s = struct ();
     s.paper_psnr = paper;
