@@ -93,9 +93,9 @@ octrun = $(OCT) --path $(CURDIR)/inst --path $(CURDIR)/src --path $(CURDIR)/scri
 pov_threads = $(if $(filter command line environment,$(origin POV_THREADS)),$(POV_THREADS),$\
   $(if $(filter-out -j1,$(filter -j%,$(MAKEFLAGS))),1,$(POV_THREADS)))
 # one per-material step (scripts/repro_step.m writes its JSON record): $(1) step, $(2) material
-octstep = POV_THREADS=$(pov_threads) $(OCT) --path $(CURDIR)/inst --path $(CURDIR)/src --path $(CURDIR)/scripts \
-  --eval 'sigterm_dumps_octave_core (false); sighup_dumps_octave_core (false); \
-  warning ("off", "Octave:shadowed-function"); pkg load optim; repro_step ("$(1)", "$(2)")'
+# (the comma of the call is $(comma): a bare one would end octrun's argument)
+comma := ,
+octstep = POV_THREADS=$(pov_threads) $(call octrun,repro_step ("$(1)"$(comma) "$(2)"))
 
 # ---- which project files each step may call: build/deps.mk, made from the
 # code by scripts/repro_deps.m (like a compiler's -MM), so that a change to a
