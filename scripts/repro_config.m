@@ -34,9 +34,8 @@ function c = repro_config (file)
   c.mesh = env_or ("MESH", "");
   get = @(name) setting (v, name, c.quick);
   c.scene = get ("SCENE");
-  c.materials = strsplit (get ("MATERIALS"));
-  c.materials(cellfun ("isempty", c.materials)) = [];
-  c.methods = strsplit (get ("METHODS"));
+  c.materials = words (get ("MATERIALS"));
+  c.methods = words (get ("METHODS"));
   c.lobes = number (get ("LOBES"), "LOBES");
   c.max_angle = number (get ("MAX_ANGLE"), "MAX_ANGLE");
   c.hemi_samples = number (get ("HEMI_SAMPLES"), "HEMI_SAMPLES");
@@ -51,10 +50,8 @@ function c = repro_config (file)
     error ("lafortune:badConfig", "repro_config: STUDY is '%s': expected 0, 1 or auto", c.study);
   endif
   c.study = strcmp (c.study, "1") || (strcmp (c.study, "auto") && isempty (c.mesh));
-  c.study_tables = strsplit (strtrim (get ("STUDY_TABLES")));
-  c.study_tables(cellfun ("isempty", c.study_tables)) = [];
-  c.study_weights = strsplit (strtrim (get ("STUDY_WEIGHTS")));
-  c.study_weights(cellfun ("isempty", c.study_weights)) = [];
+  c.study_tables = words (get ("STUDY_TABLES"));
+  c.study_weights = words (get ("STUDY_WEIGHTS"));
   c.study_light = number (get ("STUDY_LIGHT"), "STUDY_LIGHT");
   c.study_table_spp = number (get ("STUDY_TABLE_SPP"), "STUDY_TABLE_SPP");
   c.fail_psnr = number (get ("FAIL_PSNR"), "FAIL_PSNR");
@@ -97,6 +94,12 @@ function x = setting (v, name, quick)
   else
     error ("lafortune:badConfig", "repro_config: no setting %s in config.mk or the environment", name);
   endif
+endfunction
+
+## the words of S (separated by blanks; none for an empty S)
+function w = words (s)
+  w = strsplit (strtrim (s));
+  w(cellfun ("isempty", w)) = [];
 endfunction
 
 function x = number (s, name)
