@@ -24,7 +24,9 @@ function R = repro_render_fits (material)
   c = repro_config ();
   scene = repro_scene (c);
   rd = fullfile (c.results, "render");
-  ref = exrread (fullfile (rd, [material "-measured.exr"]));          # rt_render
+  if (! c.database)                                                   # the control's
+    ref = exrread (fullfile (rd, [material "-measured.exr"]));        # rt_render
+  endif
   refpov = exrread (fullfile (rd, [material "-measured-pov.exr"]));  # POV-Ray
   R = struct ("material", material, "antialias", c.pov_aa);
   for method = c.methods
