@@ -265,17 +265,19 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
     else
       R = coarse_data (D, jg, xr);
     endif
+    ## a given start (in the data's units), or none: grow lobe by lobe
+    p0 = [];
     if (! isempty (opt.start))
-      p0 = fit_unscale (model_params (opt.start, c), 1 / sc(c));
-      ch = fit_channel (D, R, nlobes, opt, G, p0);
+      p0 = model_params (opt.start, c);
     elseif (strcmp (opt.init, "plain"))
-      ## the paper's naive start, in the data's units
+      ## the paper's naive start
       p0 = [0.1; repmat([-1; 1; 0], nlobes, 1)];
       p0(4:3:end) = 10 * (1:nlobes);
-      ch = fit_channel (D, R, nlobes, opt, G, fit_unscale (p0, 1 / sc(c)));
-    else
-      ch = fit_channel (D, R, nlobes, opt, G);
     endif
+    if (! isempty (p0))
+      p0 = fit_unscale (p0, 1 / sc(c));
+    endif
+    ch = fit_channel (D, R, nlobes, opt, G, p0);
     for k = 1:numel (ch.ps)
       if (! isempty (ch.ps{k}))
         models{k} = set_params (models{k}, c, fit_unscale (ch.ps{k}, sc(c)));

@@ -7,7 +7,7 @@
 ## the same data for screening starts (both from fit_data, in the same
 ## scaled units; @code{D.P} the plain metric's groups in the data's units and
 ## @code{D.s} the scale, for the trace), @var{G} the acceptance set (fit_guard).  With a start
-## @var{p0}, one Levenberg-Marquardt run from it; else lobes are added one
+## @var{p0} (not empty), one Levenberg-Marquardt run from it; else lobes are added one
 ## at a time: starts (fit_starts), runs (fit_lm), acceptance (fit_guard and
 ## a lower objective; a zero lobe keeps the previous error, so more lobes
 ## never fit worse).
@@ -17,11 +17,11 @@
 ## @code{full_iter}, @code{cvg}, @code{rejected}, and @code{trace}: rows
 ## [seconds, objective, rmse] of the evaluations on @var{D} of accepted runs.
 ## @end deftypefn
-function ch = fit_channel (D, R, nlobes, opt, G, p0)
+function ch = fit_channel (D, R, nlobes, opt, G, p0 = [])
   t0 = tic ();
   ch = struct ("p", [], "ps", {cell(1, nlobes)}, "ktime", nan (1, nlobes), "iter", 0, "full_iter", 0, "cvg", true,
                "rejected", 0, "trace", zeros (0, 3));
-  if (nargin > 5)
+  if (! isempty (p0))
     [ch.p, ch.iter, ch.cvg, ch.trace] = fit_lm (D, p0, opt, t0);
     ch.full_iter = ch.iter;
     ch.ps{nlobes} = ch.p;
