@@ -27,11 +27,6 @@ function [j, xc] = fit_reduce (x, wt, n)
   iq = min (max (floor (q * n), 0), n - 1);
   iv = min (max (floor (v * n), 0), n - 1);
   [~, ~, j] = unique (iq * n + iv);
-  W = accumarray (j, wt);
-  cnt = accumarray (j, 1);
-  ## a cell whose weights are all zero sits at its samples' plain mean
-  z = W <= 0;
-  wz = wt + z(j);
-  W(z) = cnt(z);
-  xc = [accumarray(j, wz .* x(:,1)), accumarray(j, wz .* x(:,2))] ./ W;
+  W = accumarray (j, wt);          # > 0: lafortune_fit leaves zero weights out
+  xc = [accumarray(j, wt .* x(:,1)), accumarray(j, wt .* x(:,2))] ./ W;
 endfunction
