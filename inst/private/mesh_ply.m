@@ -180,9 +180,6 @@ function F = ply_faces (polys, nv, file)
   endif
   lens = polys.lens;
   idx = polys.vals(:);
-  if (isempty (lens))
-    error ("lafortune:meshReadCount", "mesh_read: %s: the mesh has no faces", file);
-  endif
   if (any (lens < 3))
     i = find (lens < 3, 1);
     error ("lafortune:meshReadCount",
