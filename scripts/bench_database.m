@@ -51,8 +51,8 @@ printf ("bench_database: %d materials from %s, settings: %s, %d cores\n", n, mer
         ifelse_str (isempty (args), "config.mk defaults", args), nproc ());
 system (sprintf ("make --no-print-directory -s -C '%s/src' > /dev/null", top));
 [w1, S1] = run_db (top, merl, 1, args);
-[w1t, S1t] = run_db (top, merl, 1, [args " POV_THREADS=1"]);
-[w2, S2] = run_db (top, merl, 2, args);
+w1t = run_db (top, merl, 1, [args " POV_THREADS=1"]);
+w2 = run_db (top, merl, 2, args);
 printf ("\n| jobs | POV-Ray threads | wall time (s) | s per material | speed-up |\n|---|---|---|---|---|\n");
 printf ("| 1 | all cores | %.1f | %.1f | 1.00 |\n", w1, w1 / n);
 printf ("| 1 | 1 | %.1f | %.1f | %.2f |\n", w1t, w1t / n, w1 / w1t);
