@@ -158,7 +158,7 @@
 ## five with highlights sharper than the scene table's cells; see the
 ## README).  A fit
 ## made for one scene is for that scene: lit from another direction, green
-## metallic paint renders at 34.2 / 41.0 / 43.5 dB.  Without a scene, the
+## metallic paint renders at 34.3 / 41.0 / 43.6 dB.  Without a scene, the
 ## whole hemisphere with log weights
 ## (@code{lafortune_fit (merl_samples (brdf), k, "weight", "log")}) is the
 ## best of the scene-independent fits in the study of @code{make reproduce}.
