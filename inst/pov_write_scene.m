@@ -176,17 +176,25 @@ function info = pov_write_scene (scene, material, file, varargin)
     S = pov_cast (scene, cam, L);
   endif
   top = pi/2 - 1e-6;             # scene_slice is 0 from pi/2 on
+  ## the inner maps' angle: theta_h = angle (N, H), H halfway between L and
+  ## V, for an orthographic camera (a sharp lobe is a narrow bump in (ti,
+  ## theta_h), but a thin sliver along the edge of what normals reach in
+  ## (ti, to), where to grows as theta_h squared), else to
+  C = inner_coord (persp, L, V);
+  if (opt.crop || opt.cull || persp)
+    S.u = inner_of (S.ti, S.to, C);
+  endif
   if (opt.crop)
     if (isempty (S.ti))
       rng_i = [0 top];
-      rng_o = [0 top];
+      rng_o = [0 C.top];
     else
       rng_i = [max(0, min(S.ti) - opt.pad), min(top, max(S.ti) + opt.pad)];
-      rng_o = [max(0, min(S.to) - opt.pad), min(top, max(S.to) + opt.pad)];
+      rng_o = [max(0, min(S.u) - opt.pad), min(C.top, max(S.u) + opt.pad)];
     endif
   else
     rng_i = [0 top];
-    rng_o = [0 top];
+    rng_o = [0 C.top];
   endif
   if (opt.cull)
     keep = S.keep;
@@ -221,7 +229,7 @@ function info = pov_write_scene (scene, material, file, varargin)
   endif
   ndense = n;
   if (opt.crop && ! isempty (S.ti))
-    samp = [S.ti, S.to];
+    samp = [S.ti, S.u];
   else
     samp = [];
   endif
@@ -247,11 +255,12 @@ function info = pov_write_scene (scene, material, file, varargin)
   for g = 1:ng
     sg = view_at_gamma (scene, L, gl(g));
     for q = 1:nt
-      D{g,q} = term_grid (sg, terms{q}, rng_i, rng_o, n, samp, opt, gl(g));
+      D{g,q} = term_grid (sg, terms{q}, rng_i, rng_o, n, samp, opt, gl(g), C);
       contrib(q) = max (contrib(q), D{g,q}.max);
     endfor
-    Mc = u >= abs (t' - gl(g)) & u <= min (t' + gl(g), 2 * pi - t' - gl(g)) & reach;
-    peak = max ([peak, contrib, masked_max(scene_slice (sg, material, t, u), Mc)]);
+    [lo, hi] = reach_bounds (t', gl(g), C);
+    Mc = u >= lo & u <= hi & reach;
+    peak = max ([peak, contrib, masked_max(slice_grid (sg, material, t, u, gl(g), C), Mc)]);
   endfor
   if (peak > 0)
     contrib /= peak;
@@ -274,7 +283,7 @@ function info = pov_write_scene (scene, material, file, varargin)
     tol = opt.table_tol * peak * share(q) / 2;
     id = sprintf ("Lf_term%d", q);
     for g = 1:ng
-      [sdl, no, ni] = term_sdl (D{g,q}, tol, peak, opt, L, V, names{q},
+      [sdl, no, ni] = term_sdl (D{g,q}, tol, peak, opt, L, C, names{q},
                                 sprintf ("%s_%d", id, g), persp);
       D{g,q} = [];
       body{end+1} = sdl;
@@ -290,7 +299,7 @@ function info = pov_write_scene (scene, material, file, varargin)
 
   ## write
   [osdl, nfd] = objects_sdl (scene.objects, keep, faces);
-  parts = [{header_sdl(scene, material, opt, tabs, rng_i, rng_o, peak), camera_sdl(cam, scene), ...
+  parts = [{header_sdl(scene, material, opt, tabs, rng_i, rng_o, peak, C), camera_sdl(cam, scene), ...
             light_sdl(scene, L, cam)}, body, {texture_sdl(find (kept)), osdl}];
   atomic_write (file, fname, @(fid) write_text (fid, parts));
   d = dir (file);
@@ -301,8 +310,8 @@ function info = pov_write_scene (scene, material, file, varargin)
 endfunction
 
 ## The knots and the SDL of one term's table at one gamma level: outer map
-## over ti, inner maps over to; NO and NI count the entries.
-function [sdl, no, ni] = term_sdl (Dq, tol, peak, opt, L, V, name, id, persp)
+## over ti, inner maps over the inner angle (C); NO and NI count the entries.
+function [sdl, no, ni] = term_sdl (Dq, tol, peak, opt, L, C, name, id, persp)
   ti = Dq.ti;
   to = Dq.to;
   T = Dq.T;
@@ -326,7 +335,7 @@ function [sdl, no, ni] = term_sdl (Dq, tol, peak, opt, L, V, name, id, persp)
   if (persp)
     inner = "aoi";                   # 1 - angle (N, ray toward the eye)/pi
   else
-    inner = sprintf ("slope { %s }", vec (V));
+    inner = sprintf ("slope { %s }", vec (C.dir));
   endif
   sdl = table_sdl (id, name, T, ti, to, io, Ki, L, inner);
 endfunction
@@ -435,7 +444,7 @@ endfunction
 ## square root of the largest second derivative along it (the spacing that
 ## equalises the error of linear interpolation), plus a uniform share.  Sharp
 ## lobes thus get fine sampling around their peak.
-function D = term_grid (scene, term, rng_i, rng_o, n, samp, opt, gam)
+function D = term_grid (scene, term, rng_i, rng_o, n, samp, opt, gam, C)
   passes = 2 * ! strcmp (opt.knots, "uniform");
   flat = false;
   n0 = n;
@@ -445,13 +454,14 @@ function D = term_grid (scene, term, rng_i, rng_o, n, samp, opt, gam)
   ti = linspace (rng_i(1), rng_i(2), n0)';
   to = linspace (rng_o(1), rng_o(2), n0)';
   for pass = 0:passes
-    R = scene_slice (scene, term, ti, to);
+    R = slice_grid (scene, term, ti, to, gam, C);
     c = cos (ti);
-    T = extend_c1 (R ./ c, ti, to, gam,
-                   @(t, p) scene_slice (scene, term, t, p) / cos (t));
+    [lo, hi] = reach_bounds (ti, gam, C);
+    T = extend_c1 (R ./ c, ti, to, lo, hi,
+                   @(t, p) slice_grid (scene, term, t, p, gam, C) / cos (t));
     ## what any normal can reach (the extension beyond it only serves the
     ## interpolation next to it), and with samples what the view reaches
-    M = to' >= abs (ti - gam) - opt.pad & to' <= min (ti + gam, 2 * pi - ti - gam) + opt.pad;
+    M = to' >= lo - opt.pad & to' <= hi + opt.pad;
     if (! isempty (samp))
       M &= reach_mask (samp, ti, to, opt.pad);
     endif
@@ -480,7 +490,8 @@ function D = term_grid (scene, term, rng_i, rng_o, n, samp, opt, gam)
   ## the boundary scene_slice's clamped configurations are not the scene's
   ## and a sharp lobe may be huge there
   ## and what the view reaches: M (on this grid) has it
-  M0 = to' >= abs (ti - gam) & to' <= min (ti + gam, 2 * pi - ti - gam);
+  [lo, hi] = reach_bounds (ti, gam, C);
+  M0 = to' >= lo & to' <= hi;
   D.max = masked_max (R, M0 & M);
   ## the padding and the continuation only serve the interpolation: no entry
   ## above 10 times the term's largest radiance in the view (the file then
@@ -543,11 +554,9 @@ endfunction
 ## whole table cell.  Continue each row linearly (in to) from the boundary
 ## instead: the table is then smooth to first order across it.  Extrapolated
 ## values are kept >= 0.
-function T = extend_c1 (T, ti, to, gam, evalrow)
+function T = extend_c1 (T, ti, to, lo, hi, evalrow)
   n = numel (to);
   to = to(:)';
-  lo = abs (ti - gam);
-  hi = min (ti + gam, 2 * pi - ti - gam);
   in = to >= lo & to <= hi;                     # n x n
   ok = sum (in, 2) >= 3;
   j1 = min (n + 1 - sum (cummax (in, 2), 2), n - 1);   # first reachable column
@@ -585,6 +594,59 @@ function T = extend_c1 (T, ti, to, gam, evalrow)
   endfor
 endfunction
 
+## The inner maps' angle (private to this file): theta_h = angle (N, H), H
+## = (L + V)/|L + V|, for an orthographic camera (POV-Ray's slope toward
+## H), unless L and V are nearly opposite; to = angle (N, V) otherwise
+## (slope toward V; with a perspective camera the aoi pattern).
+function C = inner_coord (persp, L, V)
+  h = (L + V) / 2;
+  C = struct ("half", ! persp && norm (h) > 0.05, "dir", V, "label", "to = angle(N,V)",
+              "top", pi/2 - 1e-6, "cosh", norm (h));     # |L + V|/2 = cos (gamma/2)
+  if (C.half)
+    C.dir = h / norm (h);
+    C.label = "theta_h = angle(N,H), H = (L+V)/|L+V|";
+    C.top = pi;
+  endif
+endfunction
+
+## the inner angle of the configurations (TI, TO) (same sizes)
+function u = inner_of (ti, to, C)
+  u = to;
+  if (C.half && ! isempty (ti))
+    u = acos (min (max ((cos (ti) + cos (to)) / (2 * C.cosh), -1), 1));
+  endif
+endfunction
+
+## the range of the inner angle that some normal reaches at each TI (a
+## column), at gamma = angle (L, V) = GAM: to in [|ti - gam|, ti + gam],
+## theta_h in [|ti - gam/2|, ti + gam/2] (N on the cone of angle ti about
+## L, which is at gam/2 from H; capped where the sums pass pi)
+function [lo, hi] = reach_bounds (ti, gam, C)
+  g = gam;
+  if (C.half)
+    g = gam / 2;
+  endif
+  lo = abs (ti - g);
+  hi = min (ti + g, 2 * pi - ti - g);
+endfunction
+
+## scene_slice on the grid TI x U of the inner angle (numel (TI) x numel (U)
+## x 3): with theta_h, to follows from cos to = 2 cos theta_h cos (gam/2) -
+## cos ti (N in the frame of H: N.L + N.V = 2 cos theta_h cos (gam/2))
+function R = slice_grid (scene, term, ti, u, gam, C)
+  if (! C.half)
+    R = scene_slice (scene, term, ti, u);
+    return;
+  endif
+  ti = ti(:);
+  u = u(:)';
+  to = acos (min (max (2 * cos (u) * cos (gam / 2) - cos (ti), -1), 1));
+  to = min (to, pi/2 - 1e-6);   # as the (ti, to) tables: continued across the
+                                # silhouette, where scene_slice steps to 0
+  TI = repmat (ti, 1, numel (u));
+  R = reshape (scene_slice (scene, term, TI(:), to(:), "pairs"), numel (ti), numel (u), []);
+endfunction
+
 function v = masked_max (R, M)
   v = 0;
   for ch = 1:size (R, 3)
@@ -617,17 +679,17 @@ function s = table_sdl (id, name, T, ti, to, io, Ki, L, inner)
   s = [parts{:}];
 endfunction
 
-function s = header_sdl (scene, material, opt, tabs, rng_i, rng_o, peak)
+function s = header_sdl (scene, material, opt, tabs, rng_i, rng_o, peak, C)
   nm = name_of (material);
   sname = name_of (scene);
   s = sprintf (["// POV-Ray 3.7 scene written by pov_write_scene (lafortune package)\n" ...
                 "// scene '%s', material '%s', %d x %d pixels\n" ...
                 "// render: povray +I<this> +O<out>.exr +FE +W%d +H%d -A File_Gamma=1.0\n" ...
-                "// tables of f(wi,wo)*E over ti = angle(N,L) in [%.6g, %.6g], to = angle(N,V) in [%.6g, %.6g] rad\n" ...
+                "// tables of f(wi,wo)*E over ti = angle(N,L) in [%.6g, %.6g], %s in [%.6g, %.6g] rad\n" ...
                 "// (slope value = 1 - angle/pi); knots %s, entries <= %d, table_tol %g, lobe_tol %g,\n" ...
                 "// largest radiance %.6g\n"],
                sname, nm, scene.width, scene.height, scene.width, scene.height,
-               rng_i, rng_o, opt.knots, opt.entries, opt.table_tol, opt.lobe_tol, peak);
+               rng_i, C.label, rng_o, opt.knots, opt.entries, opt.table_tol, opt.lobe_tol, peak);
   for q = 1:numel (tabs)
     if (tabs(q).kept)
       st = "kept";
@@ -745,7 +807,8 @@ endfunction
 %!   s = fileread (f);
 %!   assert (info.bytes, numel (s));
 %!   assert (! isempty (strfind (s, "orthographic location <0, 0, 5> direction <0, 0, -1> right <3.33333333333, 0, 0> up <0, 2.5, 0>")));
-%!   assert (! isempty (strfind (s, "slope { <0, 0.6, 0.8> } pigment_map")));
+%!   assert (! isempty (strfind (s, "slope { <0, 0.6, 0.8> } pigment_map")));      # toward L
+%!   assert (! isempty (strfind (s, "slope { <0, 0.316227766017, 0.948683298051> } pigment_map")));  # H
 %!   assert (! isempty (strfind (s, "average pigment_map { [1 Lf_term1] [1 Lf_term2] }")));
 %!   assert (! isempty (strfind (s, "diffuse 2 ")));
 %!   assert ({info.terms.name}, {"diffuse", "lobe 1"});
@@ -801,13 +864,16 @@ endfunction
 %!     endif
 %!   endfor
 %!   assert (rows (x), 64);
-%!   ti = (1 - x(:,1)) * pi; to = (1 - x(:,2)) * pi;
+%!   ## inner maps: theta_h = angle (N, H), slope toward H = (L + V)/|L + V|
+%!   assert (! isempty (strfind (fileread (f), "slope { <0, 0.316227766017, 0.948683298051> }")));
+%!   ti = (1 - x(:,1)) * pi; th = (1 - x(:,2)) * pi;
+%!   gam = acos (sc.light.direction * [0 0 1]' / norm (sc.light.direction));
+%!   to = acos (min (max (2 * cos (th) * cos (gam / 2) - cos (ti), -1), 1));
 %!   for i = 1:rows (x)
 %!     R(i,:) = squeeze (scene_slice (sc, m1, ti(i), to(i)))' / cos (ti(i));
 %!   endfor
-%!   ## where a normal can reach (ti, to); elsewhere the rows are continued
-%!   gam = acos (sc.light.direction * [0 0 1]' / norm (sc.light.direction));
-%!   ok = abs (ti - to) <= gam & gam <= ti + to;
+%!   ## where a normal can reach (ti, theta_h); elsewhere the rows are continued
+%!   ok = abs (ti - gam / 2) <= th & th <= ti + gam / 2;
 %!   assert (nnz (ok) > 20);
 %!   assert (x(ok,3:5), R(ok,:), 1e-6 * max (R(:)));
 %!   assert (max (R(:)) > 1);
