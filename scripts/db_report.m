@@ -55,17 +55,18 @@ function db_report ()
   ok = find ([D.ok]);
   nm = numel (c.methods);
   nk = numel (c.lobes);
-  ## PSNR (materials x lobes) per method
-  P = struct ();
+  ## PSNR (materials x lobes) per method: P with POV-Ray, Q with rt_render
+  P = Q = struct ();
   for m = c.methods
-    P.(m{1}) = nan (numel (mats), nk);
+    P.(m{1}) = Q.(m{1}) = nan (numel (mats), nk);
     for i = ok
       P.(m{1})(i,:) = [D(i).rec.render_fits.(m{1}).psnr_pov];
+      Q.(m{1})(i,:) = [D(i).rec.render_fits.(m{1}).psnr_rt];
     endfor
   endfor
 
   ## --- table.csv
-  head = {"material", "method", "lobes", "status", "error", "psnr_db"};
+  head = {"material", "method", "lobes", "status", "error", "psnr_db", "psnr_rt_db"};
   for t = c.methods
     head = [head, strcat({"rmse_", "log_rmse_", "cos_rmse_"}, t{1})];
   endfor
@@ -90,7 +91,7 @@ function db_report ()
       r = F.(m{1});
       for j = 1:nk
         k = c.lobes(j);
-        v = {mats{i}, m{1}, k, "ok", "", R.(m{1})(j).psnr_pov};
+        v = {mats{i}, m{1}, k, "ok", "", R.(m{1})(j).psnr_pov, R.(m{1})(j).psnr_rt};
         for t = c.methods
           e = r.errors.(t{1});
           v = [v, {mean(e.rmse(k,:)), mean(e.log_rmse(k,:)), mean(e.cos_rmse(k,:))}];
@@ -136,21 +137,24 @@ function db_report ()
   L{end+1} = "";
   L{end+1} = "## Summary across materials";
   L{end+1} = "";
-  L{end+1} = "| method | lobes | median PSNR (dB) | worst PSNR (dB) | worst material | best PSNR (dB) | median cosine-weighted rmse |";
-  L{end+1} = "|---|---|---|---|---|---|---|";
+  L{end+1} = "PSNR with POV-Ray (the fits' renderer, as the paper used one) and, in the column rt_render, with the Octave raytracer, which evaluates each model per sample: POV-Ray interpolates tables of at most 256 entries per map (a POV-Ray limit), too few for highlights with exponents above about 1e4, so on such materials the rt_render column is the faithful one.";
+  L{end+1} = "";
+  L{end+1} = "| method | lobes | median PSNR (dB) | worst PSNR (dB) | worst material | best PSNR (dB) | median PSNR, rt_render (dB) | median cosine-weighted rmse |";
+  L{end+1} = "|---|---|---|---|---|---|---|---|";
   sm = struct ("materials", {mats}, "processed", numel (ok), "failed", {{}}, "methods", struct ());
   for m = c.methods
     for j = 1:nk
       x = P.(m{1})(ok,j);
       cr = arrayfun (@(i) mean (D(i).rec.fit.(m{1}).errors.(m{1}).cos_rmse(c.lobes(j),:)), ok);
       if (isempty (x))
-        L{end+1} = sprintf ("| %s | %d | - | - | - | - | - |", label_of (label, m{1}), c.lobes(j));
+        L{end+1} = sprintf ("| %s | %d | - | - | - | - | - | - |", label_of (label, m{1}), c.lobes(j));
         continue;
       endif
       [w, iw] = min (x);
-      L{end+1} = sprintf ("| %s | %d | %.2f | %.2f | %s | %.2f | %.4g |", label_of (label, m{1}), c.lobes(j),
-                          median (x), w, mats{ok(iw)}, max (x), median (cr));
+      L{end+1} = sprintf ("| %s | %d | %.2f | %.2f | %s | %.2f | %.2f | %.4g |", label_of (label, m{1}), c.lobes(j),
+                          median (x), w, mats{ok(iw)}, max (x), median (Q.(m{1})(ok,j)), median (cr));
       sm.methods.(m{1}).median_psnr(j) = median (x);
+      sm.methods.(m{1}).median_psnr_rt(j) = median (Q.(m{1})(ok,j));
       sm.methods.(m{1}).worst_psnr(j) = w;
       sm.methods.(m{1}).worst_material{j} = mats{ok(iw)};
     endfor
@@ -170,19 +174,20 @@ function db_report ()
     gain = P.(m{1})(ok,end) - P.(m{1})(ok,1);
     low = ok(best < c.fail_psnr);
     flat = ok(gain < c.fail_gain & nk > 1);
-    drop = zeros (numel (ok), 1);
-    if (nk > 1)
-      drop = max (-diff (P.(m{1})(ok,:), 1, 2), [], 2);
-    endif
-    falls = ok(drop > c.fail_drop);
-    L{end+1} = sprintf ("- %s: below %g dB: %s; more lobes do not help: %s; more lobes render worse: %s.",
+    [falls, drop] = falls_of (P.(m{1}), ok, c.fail_drop);
+    [falls_rt, drop_rt] = falls_of (Q.(m{1}), ok, c.fail_drop);
+    L{end+1} = sprintf (["- %s: below %g dB: %s; more lobes do not help: %s; more lobes render worse: " ...
+                         "%s (POV-Ray), %s (rt_render)."],
                         label_of (label, m{1}), c.fail_psnr, names_psnr (mats, low, max (P.(m{1})(low,:), [], 2)),
                         names_psnr (mats, flat, P.(m{1})(flat,end) - P.(m{1})(flat,1), " dB gain"),
-                        names_psnr (mats, falls, -drop(drop > c.fail_drop), " dB"));
+                        names_psnr (mats, falls, -drop(drop > c.fail_drop), " dB"),
+                        names_psnr (mats, falls_rt, -drop_rt(drop_rt > c.fail_drop), " dB"));
     sm.methods.(m{1}).fails_low = mats(low);
     sm.methods.(m{1}).fails_flat = mats(flat);
     sm.methods.(m{1}).falls = mats(falls);
     sm.methods.(m{1}).largest_drop = max ([drop; 0]);
+    sm.methods.(m{1}).falls_rt = mats(falls_rt);
+    sm.methods.(m{1}).largest_drop_rt = max ([drop_rt; 0]);
   endfor
   bad = find (! [D.ok]);
   L{end+1} = "";
@@ -202,7 +207,7 @@ function db_report ()
   hdr = "| material |";
   sep = "|---|";
   for m = c.methods
-    hdr = [hdr sprintf(" %s PSNR, %s lobes (dB) |", m{1}, strjoin (arrayfun (@num2str, c.lobes, "uniformoutput", false), "/"))];
+    hdr = [hdr sprintf(" %s PSNR, POV-Ray (rt_render), %s lobes (dB) |", m{1}, strjoin (arrayfun (@num2str, c.lobes, "uniformoutput", false), "/"))];
     sep = [sep "---|"];
   endfor
   L{end+1} = [hdr " contact sheet |"];
@@ -214,7 +219,7 @@ function db_report ()
     endif
     s = sprintf ("| %s |", mats{i});
     for m = c.methods
-      s = [s " " strjoin(arrayfun (@(v) sprintf ("%.2f", v), P.(m{1})(i,:), "uniformoutput", false), " / ") " |"];
+      s = [s " " lobes_txt(P.(m{1})(i,:)) " (rt_render " lobes_txt(Q.(m{1})(i,:)) ") |"];
     endfor
     L{end+1} = [s sprintf(" [sheet](materials/%s/%s) |", mats{i}, D(i).rec.sheet.file)];
   endfor
@@ -236,6 +241,7 @@ function db_report ()
   L{end+1} = "";
   repro_save (fullfile (c.results, "report.md"), strjoin (L, "\n"));
   sm.psnr = P;
+  sm.psnr_rt = Q;
   sm.settings = struct ("scene", scene.name, "width", scene.width, "height", scene.height,
                         "spp", scene.spp, "pov_antialias", c.pov_aa, "max_angle", c.max_angle,
                         "lobes", c.lobes, "methods", {c.methods}, "quick", c.quick);
@@ -243,6 +249,21 @@ function db_report ()
   write_gallery (c, D, P, label);
   printf ("database: %d materials (%d failed): %s\n", numel (mats), numel (bad),
           fullfile (c.results, "report.md"));
+endfunction
+
+## The materials (indices into OK) whose PSNR X (materials x lobes) falls
+## by more than LIMIT dB with one more lobe, and every material's largest
+## fall DROP
+function [falls, drop] = falls_of (X, ok, limit)
+  drop = zeros (numel (ok), 1);
+  if (columns (X) > 1)
+    drop = max (-diff (X(ok,:), 1, 2), [], 2);
+  endif
+  falls = ok(drop > limit);
+endfunction
+
+function s = lobes_txt (v)
+  s = strjoin (arrayfun (@(x) sprintf ("%.2f", x), v, "uniformoutput", false), " / ");
 endfunction
 
 function s = label_of (label, m)

@@ -59,7 +59,7 @@ function repro_report ()
   others = c.methods(! strcmp (c.methods, "inplane"));
   hdr = "| material | lobes | paper | in-plane fit, POV-Ray | in-plane fit, rt_render |";
   for m = others
-    hdr = [hdr sprintf(" %s fit, POV-Ray |", mlabel.(m{1}))];
+    hdr = [hdr sprintf(" %s fit, POV-Ray / rt_render |", mlabel.(m{1}))];
   endfor
   L{end+1} = [hdr " rt_render vs POV-Ray (same model) |"];
   L{end+1} = ["|---|---|---|---|---|" repmat("---|", 1, numel (others)) "---|"];
@@ -80,7 +80,7 @@ function repro_report ()
       row = sprintf ("| %s | %d | %s | %.2f dB | %.2f dB |", mat, k, ptxt,
                      R.inplane(j).psnr_pov, R.inplane(j).psnr_rt);
       for m = others
-        row = [row sprintf(" %.2f dB |", R.(m{1})(j).psnr_pov)];
+        row = [row sprintf(" %.2f / %.2f dB |", R.(m{1})(j).psnr_pov, R.(m{1})(j).psnr_rt)];
       endfor
       L{end+1} = [row sprintf(" %.1f dB |", R.inplane(j).renderers_psnr)];
     endfor
@@ -92,6 +92,7 @@ function repro_report ()
     s.fit_rel_rmse_inplane = mean (F.inplane.errors.inplane.rel_rmse, 2)';
     for m = c.methods
       s.(["psnr_" m{1} "_pov"]) = [R.(m{1}).psnr_pov];
+      s.(["psnr_" m{1} "_rt"]) = [R.(m{1}).psnr_rt];
       s.(["fit_rmse_" m{1}]) = mean (F.(m{1}).errors.(m{1}).rmse, 2)';
       s.(["fit_time_" m{1}]) = max (F.(m{1}).lobe_time, [], 2)';
     endfor

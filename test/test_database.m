@@ -110,6 +110,10 @@
 %!   assert (numel (regexp (rep, "; more lobes render worse: ")), 3);
 %!   S = jsondecode (fileread (fullfile (db, "summary.json")));
 %!   assert (isfield (S.methods.scene, "largest_drop") && S.methods.scene.largest_drop >= 0);
+%!   ## every fit rendered by both renderers
+%!   assert (isfield (S.methods.scene, "largest_drop_rt") && S.methods.scene.largest_drop_rt >= 0);
+%!   assert (all (isfinite (S.psnr_rt.scene(isfinite (S.psnr.scene)))));
+%!   assert (numel (regexp (rep, "\\(POV-Ray\\), .{0,200}\\(rt_render\\)\\.")), 3);
 %!   assert (! isempty (regexp (rep, "\\| in-plane \\(the paper's method\\) \\| 2 \\| \\d+\\.\\d\\d \\|")));
 %!   for f = {"figures/psnr-lobes.png", "gallery/index.html", "summary.json", ...
 %!            "materials/red-plastic/sheet/red-plastic.png", ...

@@ -58,7 +58,7 @@
 %!   S = jsondecode (fileread (fullfile (out, "summary.json")));
 %!   for mat = {"green_metallic_paint", "red_plastic"}
 %!     s = S.materials.(mat{1});
-%!     for f = {"psnr_inplane_pov", "psnr_inplane_rt", "psnr_hemisphere_pov", "psnr_scene_pov", "fit_rmse_inplane", ...
+%!     for f = {"psnr_inplane_pov", "psnr_inplane_rt", "psnr_hemisphere_pov", "psnr_scene_pov", "psnr_scene_rt", "fit_rmse_inplane", ...
 %!              "fit_time_inplane", "render_time_measured", "render_time_pov", "spp_psnr", "spp_time"}
 %!       v = s.(f{1});
 %!       assert (isnumeric (v) && ! isempty (v) && all (isfinite (v(:))), sprintf ("%s.%s", mat{1}, f{1}));
@@ -70,6 +70,7 @@
 %!     ## gets worse with more lobes by more than 0.1 dB
 %!     assert (numel (s.psnr_scene_pov), 3);
 %!     assert (all (diff (s.psnr_scene_pov) >= -0.1), mat2str (s.psnr_scene_pov, 4));
+%!     assert (all (diff (s.psnr_scene_rt) >= -0.1), mat2str (s.psnr_scene_rt, 4));
 %!     ## the two renderers agree on the same model
 %!     assert (all (s.renderers_psnr > 30));
 %!   endfor
