@@ -883,6 +883,22 @@ endfunction
 %! end_unwind_protect
 
 %!test
+%! ## lit from nearly behind the viewer (|L + V| < 0.1): H is ill-defined,
+%! ## the inner maps stay over to (slope toward V)
+%! f = [tempname() ".pov"];
+%! unwind_protect
+%!   sb = sc;
+%!   sb.light.direction = [0 0.05 -1] / norm ([0 0.05 -1]);
+%!   info = pov_write_scene (sb, m, f);
+%!   s = fileread (f);
+%!   assert (! isempty (strfind (s, "slope { <0, 0, 1> } pigment_map")));
+%!   assert (! isempty (strfind (s, "to = angle(N,V) in")));
+%!   assert (info.bytes, numel (s));
+%! unwind_protect_cleanup
+%!   unlink (f);
+%! end_unwind_protect
+
+%!test
 %! ## a perspective camera with neither cropping nor culling still writes
 %! f = [tempname() ".pov"];
 %! unwind_protect
