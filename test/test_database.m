@@ -113,7 +113,8 @@
 %!   ## every fit rendered by both renderers
 %!   assert (isfield (S.methods.scene, "largest_drop_rt") && S.methods.scene.largest_drop_rt >= 0);
 %!   assert (all (isfinite (S.psnr_rt.scene(isfinite (S.psnr.scene)))));
-%!   assert (numel (regexp (rep, "\\(POV-Ray\\), .{0,200}\\(rt_render\\)\\.")), 3);
+%!   assert (numel (strfind (rep, " (POV-Ray), ")), 3, rep);
+%!   assert (numel (strfind (rep, " (rt_render).")), 3, rep);
 %!   assert (! isempty (regexp (rep, "\\| in-plane \\(the paper's method\\) \\| 2 \\| \\d+\\.\\d\\d \\|")));
 %!   for f = {"figures/psnr-lobes.png", "gallery/index.html", "summary.json", ...
 %!            "materials/red-plastic/sheet/red-plastic.png", ...
