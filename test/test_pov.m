@@ -82,7 +82,7 @@
 %! ## table (a MERL material).  Before, the tables put every entry at the peak
 %! ## and the error allowed (relative to the peak) was about half the diffuse
 %! ## level: this image was 5.3 times too bright (38.0 dB); specular-white-
-%! ## phenolic's diffuse part 40% too dark at ti = 70 degrees
+%! ## phenolic's diffuse part 44% too dark at ti = 70 degrees
 %! m = struct ("rho_d", [0.3 0.3 0.3], "Cxy", -1.0015 * [1 1 1], "Cz", 1.0015 * [1 1 1],
 %!             "e", 3000 * [1 1 1]);
 %! b = merl_synth (m, "name", "spike");
