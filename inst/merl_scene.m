@@ -134,9 +134,8 @@ function [S, img] = merl_scene (material, scene, varargin)
   state = rand ("state");
   unwind_protect
     rand ("state", scene.seed);
-    [P, miss] = trace_pass (scene, objs, cam, epsilon, (0:total-1).', jitter, npix);
+    [P, miss] = trace_pass (scene, objs, cam, epsilon, (0:total-1).', jitter, npix, 1 / total);
     ns = total;
-    P(:,8) = 1 / total;
     fine = refine_pixels (P, H, W);
     ## at most as many samples again as the first pass
     nref = min (opt.refine, floor (total / max (nnz (fine), 1)));
@@ -145,11 +144,9 @@ function [S, img] = merl_scene (material, scene, varargin)
       sr = scene;
       sr.spp = nref;
       k = reshape (pf.' + npix * (0:nref-1).', [], 1);
-      [Pr, mr] = trace_pass (sr, objs, cam, epsilon, k, jitter, npix);
-      Pr(:,8) = 1 / (npix * nref);
+      [Pr, mr] = trace_pass (sr, objs, cam, epsilon, k, jitter, npix, 1 / (npix * nref));
       ns += numel (k);
-      Pr(:,13) = 1:rows (Pr);          # each refined sample its own row
-      P(:,13) = 0;
+      Pr(:,12) = 1:rows (Pr);          # each refined sample its own row
       P = [P(! fine(P(:,1)),:); Pr];
       miss = miss .* ! fine * (1 / spp) + mr / nref;
     else
@@ -163,8 +160,7 @@ function [S, img] = merl_scene (material, scene, varargin)
   ## are rows of their own (near the mirror direction theta_h grows as the
   ## square root of the distance to the edge of the reachable (ti, to), so
   ## a cell's mean angle would miss a narrow peak)
-  P(:,end+1:13) = 0;
-  c = [floor(P(:,2:4) / (opt.bin * pi / 180)), P(:,13)];
+  c = [floor(P(:,2:4) / (opt.bin * pi / 180)), P(:,12)];
   [~, ~, cell_] = unique (c, "rows");
   n = max ([cell_; 0]);
   wgt = accumarray (cell_, P(:,8), [n 1]);
@@ -198,10 +194,10 @@ function [S, img] = merl_scene (material, scene, varargin)
 endfunction
 
 ## The lit samples K (0-based sample numbers of SCENE's pixel samples) of
-## one pass: rows [pixel, ti, to, gamma, E cos ti (1 x 3), 0, theta_h,
-## normal (1 x 3)], theta_h = angle (N, H), H halfway between L and V; MISS
-## (npix x 1) counts the samples that hit nothing, per pixel.
-function [P, miss] = trace_pass (scene, objs, cam, epsilon, k, jitter, npix)
+## one pass, each a share W of the image: rows [pixel, ti, to, gamma, E cos
+## ti (1 x 3), W, normal (1 x 3), 0 (the row's own cell: 0 = by its
+## angles)]; MISS (npix x 1) counts the samples that hit nothing, per pixel.
+function [P, miss] = trace_pass (scene, objs, cam, epsilon, k, jitter, npix, w)
   chunk = 65536;
   P = cell (1, ceil (numel (k) / chunk));
   miss = zeros (npix, 1);
@@ -213,44 +209,39 @@ function [P, miss] = trace_pass (scene, objs, cam, epsilon, k, jitter, npix)
     miss += accumarray (mod (kk, npix) + 1, T.miss, [npix 1]);
     il = find (T.lit);
     N = T.Ns(il,:);
-    L = T.L(il,:);
-    V = T.V(il,:);
-    Hv = L + V;
-    Hv ./= max (sqrt (sum (Hv .^ 2, 2)), realmin);
-    ang = acos (min (max ([sum(N .* L, 2), sum(N .* V, 2), sum(L .* V, 2), sum(N .* Hv, 2)], -1), 1));
+    ang = acos (min (max ([sum(N .* T.L(il,:), 2), sum(N .* T.V(il,:), 2), ...
+                            sum(T.L(il,:) .* T.V(il,:), 2)], -1), 1));
     q += 1;
     pix = mod (kk(T.h(il)), npix) + 1;
-    Ec = T.E(il,:) .* T.cosi(il);
-    P{q} = [pix(:), ang(:,1:3), Ec, zeros(rows(ang), 1), ang(:,4), N];
+    m = numel (il);
+    P{q} = [pix(:), ang, T.E(il,:) .* T.cosi(il), w(ones (m, 1)), N, zeros(m, 1)];
   endfor
   P = vertcat (P{1:q}, zeros (0, 12));
 endfunction
 
 ## The pixels (H x W logical, as a column) that may hold the mirror
-## direction N = H: the smallest theta_h of their samples is below twice
-## the angle between their mean normal and a neighbour's (the pixel's
-## footprint in normals).  Their highlight can be narrower than the pixel.
+## direction N = H: the smallest theta_h of their samples (half_angle) is
+## below twice the largest angle between their mean normal and a lit
+## neighbour's (the pixel's footprint in normals).  Their highlight can be
+## narrower than the pixel.
 function fine = refine_pixels (P, H, W)
   npix = H * W;
   Nm = zeros (npix, 3);
   for d = 1:3
-    Nm(:,d) = accumarray (P(:,1), P(:,9+d), [npix 1]);
+    Nm(:,d) = accumarray (P(:,1), P(:,8+d), [npix 1]);
   endfor
   len = sqrt (sum (Nm .^ 2, 2));
-  has = len > 0;
-  Nm ./= max (len, realmin);
-  th = accumarray (P(:,1), P(:,9), [npix 1], @min, Inf);
-  Nm = reshape (Nm, H, W, 3);
-  has = reshape (has, H, W);
+  has = reshape (len > 0, H, W);
+  Nm = reshape (Nm ./ max (len, realmin), H, W, 3);
+  th = accumarray (P(:,1), half_angle (P(:,2), P(:,3), P(:,4)), [npix 1], @min, Inf);
+  ## angles between vertical, then horizontal neighbours, where both are lit
   spread = zeros (H, W);
-  for sh = {[1 0], [-1 0], [0 1], [0 -1]}
-    Nn = circshift (Nm, sh{1});
-    hn = circshift (has, sh{1});
-    if (sh{1}(1) == 1), hn(1,:) = false; elseif (sh{1}(1) == -1), hn(end,:) = false; endif
-    if (sh{1}(2) == 1), hn(:,1) = false; elseif (sh{1}(2) == -1), hn(:,end) = false; endif
-    a = acos (min (max (sum (Nm .* Nn, 3), -1), 1));
-    spread = max (spread, a .* (has & hn));
-  endfor
+  a = acos (min (max (sum (Nm(1:end-1,:,:) .* Nm(2:end,:,:), 3), -1), 1)) .* (has(1:end-1,:) & has(2:end,:));
+  spread(1:end-1,:) = max (spread(1:end-1,:), a);
+  spread(2:end,:) = max (spread(2:end,:), a);
+  a = acos (min (max (sum (Nm(:,1:end-1,:) .* Nm(:,2:end,:), 3), -1), 1)) .* (has(:,1:end-1) & has(:,2:end));
+  spread(:,1:end-1) = max (spread(:,1:end-1), a);
+  spread(:,2:end) = max (spread(:,2:end), a);
   fine = has(:) & th < 2 * spread(:);
 endfunction
 

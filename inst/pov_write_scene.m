@@ -196,16 +196,14 @@ function info = pov_write_scene (scene, material, file, varargin)
   V = -cam.f;
 
   ## what the view reaches
-  if (opt.crop || opt.cull || persp)     # the gamma levels need the points too
-    S = pov_cast (scene, cam, L);
-  endif
   top = pi/2 - 1e-6;             # scene_slice is 0 from pi/2 on
   ## the inner maps' angle: theta_h = angle (N, H), H halfway between L and
   ## V, for an orthographic camera (a sharp lobe is a narrow bump in (ti,
   ## theta_h), but a thin sliver along the edge of what normals reach in
   ## (ti, to), where to grows as theta_h squared), else to
   C = inner_coord (persp, L, V);
-  if (opt.crop || opt.cull || persp)
+  if (opt.crop || opt.cull || persp)     # the gamma levels need the points too
+    S = pov_cast (scene, cam, L);
     S.u = inner_of (S.ti, S.to, C);
   endif
   if (opt.crop)
@@ -637,7 +635,7 @@ endfunction
 function C = inner_coord (persp, L, V)
   h = (L + V) / 2;
   C = struct ("half", ! persp && norm (h) > 0.05, "dir", V, "label", "to = angle(N,V)",
-              "top", pi/2 - 1e-6, "cosh", norm (h));     # |L + V|/2 = cos (gamma/2)
+              "top", pi/2 - 1e-6, "gamma", acos (max (min (L * V', 1), -1)));
   if (C.half)
     C.dir = h / norm (h);
     C.label = "theta_h = angle(N,H), H = (L+V)/|L+V|";
@@ -648,8 +646,8 @@ endfunction
 ## the inner angle of the configurations (TI, TO) (same sizes)
 function u = inner_of (ti, to, C)
   u = to;
-  if (C.half && ! isempty (ti))
-    u = acos (min (max ((cos (ti) + cos (to)) / (2 * C.cosh), -1), 1));
+  if (C.half)
+    u = half_angle (ti, to, C.gamma);
   endif
 endfunction
 
