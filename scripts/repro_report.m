@@ -86,7 +86,6 @@ function repro_report ()
     endfor
     s = struct ();
     s.paper_psnr = paper;
-    s.psnr_inplane_rt = [R.inplane.psnr_rt];
     s.renderers_psnr = [R.inplane.renderers_psnr];
     s.renderers_psnr_measured = M.renderers_psnr;
     s.fit_rel_rmse_inplane = mean (F.inplane.errors.inplane.rel_rmse, 2)';

@@ -89,7 +89,7 @@ function R = repro_study (material)
     same = (isfield (main, tn) && strcmp (w, Wfit.(tn)) && isequal (c.lobes, 1:nl)
             && (! strcmp (tn, "hemisphere") || isinf (c.hemi_samples)));
     printf ("reproduce: [%s] study: %s table, %s weights, 1..%d lobes%s\n", material, tn, wn, nl,
-            ifelse (same, " (the fit step's fits)", ""));
+            merge (same, " (the fit step's fits)", ""));
     fflush (stdout);
     if (same)
       models = main.(tn);
@@ -139,6 +139,3 @@ function tf = same_model (a, b)
                <= 1e-12 * max (1, abs ([a.rho_d(:); a.Cxy(:); a.Cz(:); a.e(:)])));
 endfunction
 
-function s = ifelse (c, a, b)
-  if (c) s = a; else s = b; endif
-endfunction
