@@ -19,7 +19,8 @@ function [f, J] = lafortune_core (p, sxy, sz)
   n = numel (sxy);
   nl = (numel (p) - 1) / 3;
   f = zeros (n, 1) + p(1) / pi;
-  if (nargout > 1)
+  jac = nargout > 1;
+  if (jac)
     J = zeros (n, numel (p));
     J(:,1) = 1 / pi;
   endif
@@ -27,30 +28,32 @@ function [f, J] = lafortune_core (p, sxy, sz)
     cxy = p(3*k-1);
     cz = p(3*k);
     e = p(3*k+1);
+    ## a lobe is 0 where its base is not positive: only the samples ON it
+    ## are computed (about half, for the fitted lobes)
     b = cxy * sxy + cz * sz;
-    on = b > 0;
-    ## log of the clamped base; realmin keeps it finite, ON zeroes the lobe
-    lb = log (max (b, realmin));
-    if (e == 0)
-      L = double (on);
-    else
-      t = e * lb;
-      L = exp (max (min (t, LOGMAX), -700)) .* on;   # no denormals: they are slow
+    on = find (b > 0);
+    if (isempty (on))
+      continue;
     endif
-    f += L;
-    if (nargout > 1)
-      if (e == 0)
-        dLdb = zeros (n, 1);
-        dLde = lb .* on;
-      else
-        ## d/db of b^e = e b^(e-1), formed in log space; 0 where capped
-        live = on & (t <= LOGMAX);
-        dLdb = e * exp (max (min (t - lb, LOGMAX), -700)) .* live;
-        dLde = L .* lb .* live;
+    ## log of the base; realmin keeps it finite
+    lb = log (max (b(on), realmin));
+    if (e == 0)
+      f(on) += 1;
+      if (jac)
+        J(on,3*k+1) = lb;
       endif
-      J(:,3*k-1) = dLdb .* sxy;
-      J(:,3*k)   = dLdb .* sz;
-      J(:,3*k+1) = dLde;
+      continue;
+    endif
+    t = e * lb;
+    L = exp (max (min (t, LOGMAX), -700));   # no denormals: they are slow
+    f(on) += L;
+    if (jac)
+      ## d/db of b^e = e b^(e-1), formed in log space; 0 where capped
+      live = t <= LOGMAX;
+      dLdb = e * exp (max (min (t - lb, LOGMAX), -700)) .* live;
+      J(on,3*k-1) = dLdb .* sxy(on);
+      J(on,3*k)   = dLdb .* sz(on);
+      J(on,3*k+1) = L .* lb .* live;
     endif
   endfor
 endfunction
