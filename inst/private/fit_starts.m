@@ -24,47 +24,42 @@ function P = fit_starts (D, p)
   wl2 = D.wl .^ 2;
   S1 = sum (wl2);
   Sr = sum (wl2 .* r);
-  cand = zeros (0, 6);     # [objective, d, cxy, cz, e, family]
-  for i = 1:rows (dirs)
-    b = dirs(i,1) * D.x(:,1) + dirs(i,2) * D.x(:,2);
-    on = find (b > 0);
-    if (isempty (on))
-      continue;
-    endif
-    ## every exponent at once: g(:,k) = b^expo(k) where b > 0
-    g = exp (max (log (b(on)) * expo, -700));
-    ## amplitude s >= 0 and a change d of rho_d/pi (rho_d stays >= 0) by
-    ## linear least squares
-    Sg = wl2(on).' * g;
-    Sgg = wl2(on).' * g .^ 2;
-    Sgr = (wl2(on) .* r(on)).' * g;
-    dt = S1 * Sgg - Sg .^ 2;
-    s = (S1 * Sgr - Sg * Sr) ./ dt;
-    d = (Sr - s .* Sg) / S1;
-    alone = ! (dt > 0 & s > 0 & d >= -p(1) / pi);
-    s(alone) = Sgr(alone) ./ Sgg(alone);
-    d(alone) = 0;
-    a = s .^ (1 ./ expo);
-    ## a lobe that lives on a handful of samples is no start
-    support = sum (g > 1e-3 * max (g, [], 1), 1);
-    ok = Sgg > 0 & s > 0 & isfinite (a) & a > 0 & support >= min_support;
-    if (! any (ok))
-      continue;
-    endif
-    ## the objective of every candidate at once (by columns)
-    s = s(ok); d = d(ok); g = g(:,ok);
-    F = fcur + d;
-    F(on,:) += g .* s;
-    obj = fit_objective (D, F);
-    cand = [cand; obj(:), d(:), a(ok)(:) * dirs(i,:), expo(ok)(:), i * ones(numel (s), 1)];
-  endfor
-  if (isempty (cand))
+  ## every candidate at once, one column each (family by family, each
+  ## with every exponent): g = b^e where the base b > 0, else 0
+  nd = rows (dirs);
+  ne = numel (expo);
+  fam = ceil ((1:nd*ne) / ne);
+  ex = expo(mod (0:nd*ne-1, ne) + 1);
+  B = D.x * dirs.';
+  on = double (B > 0);
+  lb = log (max (B, realmin));
+  g = exp (max (lb(:,fam) .* ex, -700)) .* on(:,fam);
+  ## amplitude s >= 0 and a change d of rho_d/pi (rho_d stays >= 0) by
+  ## linear least squares
+  Sg = wl2.' * g;
+  Sgg = wl2.' * g .^ 2;
+  Sgr = (wl2 .* r).' * g;
+  dt = S1 * Sgg - Sg .^ 2;
+  s = (S1 * Sgr - Sg * Sr) ./ dt;
+  d = (Sr - s .* Sg) / S1;
+  alone = ! (dt > 0 & s > 0 & d >= -p(1) / pi);
+  s(alone) = Sgr(alone) ./ Sgg(alone);
+  d(alone) = 0;
+  a = s .^ (1 ./ ex);
+  ## a lobe that lives on a handful of samples is no start
+  support = sum (g > 1e-3 * max (g, [], 1), 1);
+  ok = Sgg > 0 & s > 0 & isfinite (a) & a > 0 & support >= min_support;
+  if (! any (ok))
     P = zeros (numel (p) + 3, 0);
     return;
   endif
-  [~, order] = sort (cand(:,1));
-  [~, first] = unique (cand(order,6), "first");
-  order = order(sort (first));
-  P = [p(:,ones (1, numel (order))); cand(order,3:5).'];
-  P(1,:) = max (p(1) + pi * cand(order,2).', 0);
+  ## the objective of every candidate
+  obj = fit_objective (D, fcur + d(ok) + g(:,ok) .* s(ok));
+  k = find (ok);
+  [~, order] = sort (obj);
+  ## the best of each family, best family first
+  [~, first] = unique (fam(k(order)), "first");
+  best = k(order(sort (first)));
+  P = [p(:,ones (1, numel (best))); a(best) .* dirs(fam(best),:).'; ex(best)];
+  P(1,:) = max (p(1) + pi * d(best), 0);
 endfunction
