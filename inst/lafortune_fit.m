@@ -225,7 +225,7 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
     pspec.w = pspec.w(keep,:);
     pspec.ty = pspec.ty(keep,:);
   endif
-  [j, xc, xr, info_reduce, jg] = groups (x, wt(keep), opt);
+  [j, xc, xr, info_reduce, jg, jrep] = groups (x, wt(keep), opt);
   if (isfield (S, "kind") && strcmp (S.kind, "scene"))
     ## a scene table: every pair a normal can make at its angles between
     ## light and viewer (the table itself has gaps between its pixels)
@@ -258,12 +258,17 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
                c);
     endif
     D = fit_data (fspec, c, j, xc, y);
-    D.P = fit_data (pspec, c, j, xc, Sf.rgb(:,c));
     D.s = sc(c);
+    ## the trace's rmse: the fit's own objective times D.s when that is the
+    ## plain one, else the plain metric's groups (fit_objective)
+    D.same = strcmp (opt.weight, "plain");
+    if (! D.same)
+      D.P = fit_data (pspec, c, j, xc, Sf.rgb(:,c));
+    endif
     if (rows (xr) == rows (xc))
       R = D;
     else
-      R = coarse_data (D, jg, xr);
+      R = coarse_data (D, jg, jrep);
     endif
     ## a given start (in the data's units), or none: grow lobe by lobe
     p0 = [];
@@ -525,8 +530,9 @@ endfunction
 ## cells when there are more than AUTO_GROUPS samples, or as "reduce" says)
 ## and the coarse grid that screens starts (JG: each group's cell, XR: the
 ## cells' positions; about "screen_samples" cells, or the groups themselves
-## when there are no more than that).
-function [j, xc, xr, how, jg] = groups (x, wt, opt)
+## when there are no more than that), and for each cell the group nearest
+## its position (REP), which stands for it in coarse_data.
+function [j, xc, xr, how, jg, rep] = groups (x, wt, opt)
   AUTO_GROUPS = 20000;
   AUTO_GRID = 512;
   if (isnumeric (opt.reduce))
@@ -542,7 +548,7 @@ function [j, xc, xr, how, jg] = groups (x, wt, opt)
   else
     how = sprintf ("grid %d", n);
   endif
-  xr = xc; jg = (1:rows (xc))';
+  xr = xc; jg = (1:rows (xc))'; rep = jg;
   if (rows (xc) > opt.screen_samples)
     ## coarsen the groups (cells of about the wanted count)
     gw = accumarray (j, wt);
@@ -554,31 +560,28 @@ function [j, xc, xr, how, jg] = groups (x, wt, opt)
       endif
       n *= 2;
     endwhile
+    d = sum ((xc - xr(jg,:)) .^ 2, 2);
+    [~, o] = sortrows ([jg d]);
+    first = true (numel (o), 1);
+    first(2:end) = jg(o(2:end)) != jg(o(1:end-1));
+    rep = zeros (rows (xr), 1);
+    rep(jg(o(first))) = o(first);
   endif
 endfunction
 
 ## The coarse data for screening starts and warm-up runs: per cell of the
-## coarse grid (JG: each group's cell, XR: the cells' positions), the group
-## of D nearest the cell's position stands for the cell, with the cell's
+## coarse grid (JG: each group's cell), the group REP of D nearest the
+## cell's position stands for the cell, with the cell's
 ## summed weights.  The objective on it is a quadrature of D's; unlike
 ## the cell's mean value at its mean (a, c), it has no bias where the model
 ## is curved within a cell, so its minimiser is closer to D's (measured on
 ## the in-plane tables: 5 to 20% fewer iterations on D).
-function R = coarse_data (D, jg, xr)
-  W = accumarray (jg, D.w .^ 2);
-  Wl = accumarray (jg, D.wl .^ 2);
-  d = sum ((D.x - xr(jg,:)) .^ 2, 2);
-  ng = rows (xr);
-  [~, o] = sortrows ([jg d]);
-  first = true (numel (o), 1);
-  first(2:end) = jg(o(2:end)) != jg(o(1:end-1));
-  rep = zeros (ng, 1);
-  rep(jg(o(first))) = o(first);
+function R = coarse_data (D, jg, rep)
   R = D;
   R.x = D.x(rep,:);
-  R.w = sqrt (W);
+  R.w = sqrt (accumarray (jg, D.w .^ 2));
   R.ty = D.ty(rep);
-  R.wl = sqrt (Wl);
+  R.wl = sqrt (accumarray (jg, D.wl .^ 2));
   R.yl = D.yl(rep);
 endfunction
 

@@ -5,8 +5,8 @@
 ## @deftypefn {} {@var{ch} =} fit_channel (@var{D}, @var{R}, @var{nlobes}, @var{opt}, @var{G}, @var{p0})
 ## Fit one channel (private): @var{D} the data, @var{R} a coarser grouping of
 ## the same data for screening starts (both from fit_data, in the same
-## scaled units; @code{D.P} the plain metric's groups in the data's units and
-## @code{D.s} the scale, for the trace), @var{G} the acceptance set (fit_guard).  With a start
+## scaled units; @code{D.s} the scale, @code{D.same} and @code{D.P} the
+## plain metric, for the trace: see fit_objective), @var{G} the acceptance set (fit_guard).  With a start
 ## @var{p0} (not empty), one Levenberg-Marquardt run from it; else lobes are added one
 ## at a time: starts (fit_starts), runs (fit_lm), acceptance (fit_guard and
 ## a lower objective; a zero lobe keeps the previous error, so more lobes
@@ -30,8 +30,8 @@ function ch = fit_channel (D, R, nlobes, opt, G, p0 = [])
   ## 0 lobes: rho_d by weighted least squares
   p = max (pi * sum (D.wl .^ 2 .* D.yl) / max (sum (D.wl .^ 2), realmin), 0);
   f0 = lafortune_core (p, D.x(:,1), D.x(:,2));
-  obj = fit_objective (D, f0);
-  ch.trace = [toc(t0), obj, fit_objective(D.P, D.s * f0)];
+  [obj, e0] = fit_objective (D, f0);
+  ch.trace = [toc(t0), obj, e0];
   for k = 1:nlobes
     run = add_lobe (D, R, p, obj, opt, G, t0);
     p = run.p;

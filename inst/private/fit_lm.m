@@ -14,9 +14,8 @@
 ##
 ## With @var{t0} (a @code{tic} value), every evaluation of the model is noted
 ## as a row [seconds since @var{t0}, objective, rmse] of @var{T}: the
-## objective of @var{D} and the plain rmse of @code{D.P} (the plain metric's
-## groups, in the data's units: the model times @code{D.s}); the caller
-## decides whether the run counts.
+## objective of @var{D} and the plain rmse in the data's units (both from
+## fit_objective); the caller decides whether the run counts.
 ## @end deftypefn
 function [p, iter, cvg, T] = fit_lm (D, p0, opt, t0 = [])
   np = numel (p0);
@@ -92,7 +91,8 @@ endfunction
 function f = model_fun (D, p, rec)
   f = lafortune_core (p, D.x(:,1), D.x(:,2));
   if (! isempty (rec))
-    rec.add (fit_objective (D, f), fit_objective (D.P, D.s * f));
+    [o, e] = fit_objective (D, f);
+    rec.add (o, e);
   endif
   if (! D.identity)
     f = D.t (f, D.c);

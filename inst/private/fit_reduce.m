@@ -19,7 +19,13 @@
 ## @end deftypefn
 function [j, xc] = fit_reduce (x, wt, n)
   if (isinf (n))
-    [xc, ~, j] = unique (x, "rows");
+    ## unique (x, "rows"), without its overhead: sorted rows, the first of
+    ## each run of equal rows
+    [xs, o] = sortrows (x);
+    first = [true; any(xs(2:end,:) != xs(1:end-1,:), 2)];
+    j = zeros (rows (x), 1);
+    j(o) = cumsum (first);
+    xc = xs(first,:);
     return;
   endif
   q = sqrt (max (1 - (x(:,2) - x(:,1)), 0)) / sqrt (2);   # [0, 1]
