@@ -6,8 +6,8 @@
 ## 20 iterations, no bounds, plain start) against this toolbox's fit
 ## (analytic Jacobian, bounds, grown deterministic start); the same table,
 ## model and start fitted by scipy.optimize.least_squares (method "lm",
-## MINPACK, analytic Jacobian; skipped when Debian's python3-scipy is absent)
-## on both paper materials, median times;
+## MINPACK, analytic Jacobian, one thread; skipped when Debian's python3-scipy
+## is absent) on both paper materials, median times;
 ## full-hemisphere fits on every valid bin, reduced to (a, c) cells, against
 ## the fit on all distinct (a, c) pairs; and merl_eval throughput.  Prints
 ## tables; not a test.  Run: make bench
@@ -56,7 +56,8 @@ endfor
 ## the peer: scipy's MINPACK on the same table, model and start, for both
 ## paper materials
 printf ("\nPeer: scipy.optimize.least_squares (method \"lm\", MINPACK, analytic Jacobian), same table and model,\n");
-printf ("from lafortune_fit's \"plain\" start; (c) lafortune_fit from that start; (b) lafortune_fit as above (grown start).\n");
+printf ("from lafortune_fit's \"plain\" start, on one thread (OpenBLAS's second thread only spins here: scipy is\n");
+printf ("faster without it); (c) lafortune_fit from that start; (b) lafortune_fit as above (grown start).\n");
 preps = 5;
 printf ("Times: median of %d, all 3 channels, wall-clock s (processor s); ratio = lafortune_fit / scipy; rmse: mean over RGB.\n", preps);
 py = scipy_python ();
@@ -78,7 +79,8 @@ else
     fid = fopen (tab, "w");
     fprintf (fid, "%.17g %.17g %.17g %.17g %.17g\n", [x Sp.rgb].');
     fclose (fid);
-    [st, out] = system (sprintf ("%s %s %s 3 %d", py, fullfile (here, "bench_fit_scipy.py"), tab, preps));
+    [st, out] = system (sprintf ("OPENBLAS_NUM_THREADS=1 OMP_NUM_THREADS=1 MKL_NUM_THREADS=1 %s %s %s 3 %d",
+                                 py, fullfile (here, "bench_fit_scipy.py"), tab, preps));
     unlink (tab);
     P = sscanf (out, "%f", [7 Inf]).';
     if (st != 0 || rows (P) != 3)
