@@ -39,19 +39,15 @@ function R = repro_render_fits (material)
       base = fullfile (rd, sprintf ("%s-%s-%d", material, mth, k));
       exrwrite ([base ".exr"], img);
       img_write_png ([base ".png"], img, "auto");
-      r = struct ("lobes", k, "psnr_pov", img_psnr (refpov, img), "psnr_rt", NaN,
-                  "renderers_psnr", NaN, "pov_time", pinfo.time, "pov_scene_bytes", pinfo.bytes,
-                  "rt_time", NaN);
       ## the same model through the Octave raytracer, with the measured
       ## render's samples
       [img_rt, rinfo] = rt_render (scene, m, "progress", false);
-      r.psnr_rt = img_psnr (ref, img_rt);
-      r.renderers_psnr = img_psnr (img_rt, img);
-      r.rt_time = rinfo.time_total;
+      r = struct ("lobes", k, "psnr_pov", img_psnr (refpov, img), "psnr_rt", img_psnr (ref, img_rt),
+                  "renderers_psnr", img_psnr (img_rt, img), "pov_time", pinfo.time,
+                  "pov_scene_bytes", pinfo.bytes, "rt_time", rinfo.time_total);
       R.(mth)(find (c.lobes == k)) = r;
-      printf ("reproduce: [%s] %s %d lobe(s): PSNR %.2f dB (POV-Ray, %.1f s)", material, mth, k,
-              r.psnr_pov, r.pov_time);
-      printf (", %.2f dB (rt_render, %.1f s)\n", r.psnr_rt, r.rt_time);
+      printf ("reproduce: [%s] %s %d lobe(s): PSNR %.2f dB (POV-Ray, %.1f s), %.2f dB (rt_render, %.1f s)\n",
+              material, mth, k, r.psnr_pov, r.pov_time, r.psnr_rt, r.rt_time);
     endfor
   endfor
 endfunction
