@@ -47,7 +47,9 @@
 ## grid (to a looser tolerance, 1e-4) when that is much smaller than the
 ## data and an iteration on all groups is costly (groups times parameters^2
 ## above 200000: on the in-plane table from 2 lobes on), then a run on all
-## groups.  A result
+## groups.  Without a warm-up (on the in-plane table, the first lobe), the
+## best candidate is first refined the same way on a finer grid of
+## directions and exponents around it.  A result
 ## that exceeds 10 times the data's maximum anywhere in the data's angular
 ## range (checked on a 0.5-degree in-plane grid, where every lobe's base
 ## reaches its extremes; for a scene table on every pair a normal can make
@@ -78,7 +80,11 @@
 ## default is only 20).
 ## @item "tol"
 ## leasqr's tolerance on the fractional improvement of the sum of squares
-## (default 1e-7).
+## (default 1e-7).  A run ends when an iteration improves the sum of
+## squares by less than that (leasqr's test), or one iteration earlier when
+## the Gauss-Newton step predicts less than that (MINPACK's test): that
+## saves leasqr's last iteration, which tries five dampings before it gives
+## up, and loses less than @code{"tol"} of the sum of squares.
 ## @item "tries"
 ## starts screened per added lobe (default 1, and Inf, every direction
 ## family, for @code{"psnr"}): with more, the best start of
@@ -878,6 +884,25 @@ endfunction
 %! [m, info] = lafortune_fit (S, 1, "channels", 2);
 %! assert (info.rel_rmse(2), 1, 1e-12);
 %! assert (lafortune_eval (m, S.wi, S.wo)(:,2), zeros (9, 1));
+
+%!test
+%! ## a run ends one iteration early when the Gauss-Newton step predicts
+%! ## less than "tol" of improvement: it loses no more than that against a
+%! ## run to a far tighter tolerance, from the grown start and from a start
+%! ## at the optimum (on noisy data, a large-residual problem like MERL's)
+%! truth = struct ("rho_d", [0.05 0.1 0.02], "Cxy", [-1 -1 -1; -0.7 -0.6 -0.8], ...
+%!                 "Cz", [1 1 1; 0.72 0.65 0.8], "e", [200 150 300; 8 6 10]);
+%! S = __plane (truth);
+%! randn ("state", 7);
+%! S.rgb .*= exp (0.2 * randn (size (S.rgb)));
+%! for k = 1:2
+%!   [m, i1] = lafortune_fit (S, k, "tol", 1e-6);
+%!   [~, i2] = lafortune_fit (S, k, "tol", 1e-13, "max_iter", 400);
+%!   assert (i1.rmse .^ 2 <= i2.rmse .^ 2 * (1 + 1e-6));
+%!   [~, i3] = lafortune_fit (S, k, "start", m, "tol", 1e-6);
+%!   assert (i3.iterations <= 2);
+%!   assert (i3.rmse .^ 2 <= i1.rmse .^ 2 * (1 + 1e-12));
+%! endfor
 
 %!warning <did not converge> lafortune_fit (__plane (struct ("rho_d", [0.2 0.1 0.05], "Cxy", [-0.9 -1 -1.1], "Cz", [0.8 1 0.9], "e", [5 30 80])), 1, "max_iter", 1, "channels", 1);
 

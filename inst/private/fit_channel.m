@@ -59,19 +59,25 @@ function run = add_lobe (D, R, p, obj, opt, G, t0)
   WARMUP_TOL = 1e-4;
   run = struct ("p", [p; 0; 0; 1], "obj", obj, "trace", zeros (0, 3), "iter", 0,
                 "full_iter", 0, "rejected", 0, "cvg", true);
-  starts = fit_starts (R, p);
-  if (isempty (starts) || ! (obj > 0))
-    return;
-  endif
   ## a warm-up run on R pays only when R is much smaller than D and an
   ## iteration on D costs much more than leasqr's fixed cost per iteration
   ## (measured: about an SVD of groups x parameters^2 = 200000; on the
   ## in-plane table, 6561 groups, from 2 lobes on); it stops at a looser
-  ## tolerance, as it only brings the start closer
-  np = rows (starts);
+  ## tolerance, as it only brings the start closer.  Without one, the best
+  ## start is refined on R (fit_starts)
+  np = numel (p) + 3;
   coarse = 4 * rows (R.x) < rows (D.x) && rows (D.x) * np ^ 2 > WARMUP_COST;
+  starts = fit_starts (R, p, ! coarse);
+  if (isempty (starts) || ! (obj > 0))
+    return;
+  endif
   warm = opt;
   warm.tol = max (opt.tol, WARMUP_TOL);
+  ## a warm-up ends by leasqr's own test (fit_lm): its last iteration and
+  ## the dampings that iteration tries are on the coarse grid, where they
+  ## cost little, and ending it one iteration earlier can cost the run on D
+  ## more (red-plastic, 3 lobes: 5 iterations on D more in one channel)
+  warm.flat = false;
   ntry = min (opt.tries, columns (starts));
   done = false (1, columns (starts));
   if (ntry > 1)

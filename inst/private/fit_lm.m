@@ -12,6 +12,13 @@
 ## result clamped to them; when that fails too, @var{p} is @var{p0} and
 ## @var{cvg} false.
 ##
+## The run ends when leasqr's own test ends it (an iteration improves the
+## sum of squares by less than @code{opt.tol} of it), or one iteration
+## earlier, when the decrease that the Gauss-Newton step predicts is below
+## that (MINPACK's test, fit_recorder): leasqr then needs neither that
+## iteration nor the five dampings it tries before it gives up.  With
+## @code{opt.flat} false, only leasqr's own test.
+##
 ## With @var{t0} (a @code{tic} value), every evaluation of the model is noted
 ## as a row [seconds since @var{t0}, objective, rmse] of @var{T}: the
 ## objective of @var{D} and the plain rmse in the data's units (both from
@@ -19,10 +26,11 @@
 ## @end deftypefn
 function [p, iter, cvg, T] = fit_lm (D, p0, opt, t0 = [])
   np = numel (p0);
-  rec = [];
-  if (! isempty (t0))
-    rec = fit_recorder (t0);
+  ftol = opt.tol;
+  if (isfield (opt, "flat") && ! opt.flat)
+    ftol = 0;                             # leasqr's own test only
   endif
+  rec = fit_recorder (t0, ftol);
   F = @(xx, pp) model_fun (D, pp, rec);
   lb = -Inf (np, 1); ub = Inf (np, 1);
   lb(1) = 0;
@@ -34,7 +42,7 @@ function [p, iter, cvg, T] = fit_lm (D, p0, opt, t0 = [])
   endif
   dp = 1e-3 * ones (np, 1);
   if (strcmp (opt.jacobian, "analytic"))
-    dFdp = @(xx, f, pp, dpp, FF, varargin) model_jac (D, pp);
+    dFdp = @(xx, f, pp, dpp, FF, varargin) model_jac (D, pp, f, rec);
   else
     dFdp = "dfdp";
   endif
@@ -46,7 +54,8 @@ function [p, iter, cvg, T] = fit_lm (D, p0, opt, t0 = [])
   verbose = false;
   unwind_protect
     try
-      [~, p, cvg, iter] = quiet_leasqr (D.x, D.ty, p0, F, opt.tol, opt.max_iter, D.w, dp, dFdp, options);
+      [p, cvg, iter] = run_leasqr (rec, D.x, D.ty, p0, F, opt.tol, opt.max_iter, D.w, dp, dFdp,
+                                   options);
     catch err
       ## leasqr's handling of bounds (complementary pivoting, cpiv_bard) can
       ## fail ("not successful") on a degenerate step: run without bounds,
@@ -54,9 +63,14 @@ function [p, iter, cvg, T] = fit_lm (D, p0, opt, t0 = [])
       if (! isfield (options, "bounds"))
         rethrow (err);
       endif
+      rec = fit_recorder (t0, ftol);
+      F = @(xx, pp) model_fun (D, pp, rec);
+      if (! ischar (dFdp))
+        dFdp = @(xx, f, pp, dpp, FF, varargin) model_jac (D, pp, f, rec);
+      endif
       try
-        [~, p, cvg, iter] = quiet_leasqr (D.x, D.ty, p0, F, opt.tol, opt.max_iter, D.w, dp, dFdp,
-                                          struct ());
+        [p, cvg, iter] = run_leasqr (rec, D.x, D.ty, p0, F, opt.tol, opt.max_iter, D.w, dp, dFdp,
+                                     struct ());
       catch
         p = p0; cvg = false; iter = 0;
       end_try_catch
@@ -76,21 +90,31 @@ function [p, iter, cvg, T] = fit_lm (D, p0, opt, t0 = [])
   if (opt.bounds)
     p = min (max (p, lb), ub);
   endif
-  T = zeros (0, 3);
-  if (! isempty (rec))
-    T = rec.T;
-  endif
+  T = rec.T;
 endfunction
 
-function varargout = quiet_leasqr (varargin)
-  ## leasqr prints " CONVERGENCE NOT ACHIEVED! " itself; lafortune_fit warns instead
+## leasqr with the arguments ARGS, quiet (it prints " CONVERGENCE NOT
+## ACHIEVED! " itself; lafortune_fit warns instead), ended early by the
+## Jacobian's flat test (REC; see model_jac)
+function [p, cvg, iter] = run_leasqr (rec, varargin)
   args = varargin;
-  [out, varargout{1:4}] = evalc ("leasqr (args{:})");
+  try
+    ## (named outputs: evalc leaves an output undefined when the one before
+    ## it is ignored with ~)
+    [out, f, p, cvg, iter] = evalc ("leasqr (args{:})");
+  catch err
+    if (! strcmp (err.identifier, "lafortune:flatRun"))
+      rethrow (err);
+    endif
+    p = rec.p;
+    cvg = true;
+    iter = rec.iter;
+  end_try_catch
 endfunction
 
 function f = model_fun (D, p, rec)
   f = lafortune_core (p, D.x(:,1), D.x(:,2));
-  if (! isempty (rec))
+  if (! isempty (rec.t0))
     [o, e] = fit_objective (D, f);
     rec.add (o, e);
   endif
@@ -99,9 +123,17 @@ function f = model_fun (D, p, rec)
   endif
 endfunction
 
-function J = model_jac (D, p)
-  [f, J] = lafortune_core (p, D.x(:,1), D.x(:,2));
+## The Jacobian at P, where the model's (transformed) values are F; leasqr
+## asks for it once per iteration, at its best point.  When REC finds that
+## no step can improve the sum of squares by the run's tolerance any more,
+## the run ends here (leasqr has no output function; the error is caught
+## by run_leasqr, and P is the run's result)
+function J = model_jac (D, p, f, rec)
+  [fm, J] = lafortune_core (p, D.x(:,1), D.x(:,2));
   if (! D.identity)
-    J .*= D.dt (f, D.c);
+    J .*= D.dt (fm, D.c);
+  endif
+  if (rec.flat (p, D.w, J, D.ty - f))
+    error ("lafortune:flatRun", "fit_lm: no step can improve the fit by its tolerance");
   endif
 endfunction
