@@ -587,7 +587,10 @@ function R = coarse_data (D, jg, rep)
   R.x = D.x(rep,:);
   R.w = sqrt (accumarray (jg, D.w .^ 2));
   R.ty = D.ty(rep);
-  R.wl = sqrt (accumarray (jg, D.wl .^ 2));
+  R.wl = R.w;                          # (fit_data: wl is w for an identity)
+  if (! D.identity)
+    R.wl = sqrt (accumarray (jg, D.wl .^ 2));
+  endif
   R.yl = D.yl(rep);
 endfunction
 

@@ -20,7 +20,8 @@
 ## divisor), @code{t}, @code{dt}, @code{c} and @code{identity} (the
 ## transform), and for the linear amplitudes of the candidate starts the
 ## first-order weights w t'(y)^2 and their weighted mean data (@code{wl} =
-## sqrt of their group sums, @code{yl}).  @code{ymax} is the largest |y|.
+## sqrt of their group sums, @code{yl}; for an identity transform, where ty
+## is y, they are @code{w} and @code{ty}).  @code{ymax} is the largest |y|.
 ## @end deftypefn
 function D = fit_data (spec, c, j, xc, y)
   w = spec.w(:,c);
@@ -36,12 +37,14 @@ function D = fit_data (spec, c, j, xc, y)
   D.c = c;
   D.identity = spec.identity;
   if (spec.identity)
-    wl2 = w;
+    ## the weights and data of the linear problem are the fit's own
+    D.wl = D.w;
+    D.yl = D.ty;
   else
     wl2 = w .* spec.dt (y, c) .^ 2;
+    Wl = accumarray (j, wl2);
+    D.wl = sqrt (Wl);
+    D.yl = accumarray (j, wl2 .* y) ./ max (Wl, realmin);
   endif
-  Wl = accumarray (j, wl2);
-  D.wl = sqrt (Wl);
-  D.yl = accumarray (j, wl2 .* y) ./ max (Wl, realmin);
   D.ymax = max (abs (y));
 endfunction
