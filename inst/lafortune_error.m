@@ -13,7 +13,8 @@
 ## table with fields @code{wi}, @code{wo} (N x 3 unit directions) and
 ## @code{rgb} (N x 3 reference values), such as @code{merl_plane},
 ## @code{merl_samples} or @code{merl_scene} return.  When @var{S} has a
-## field @code{weight} (N x 1, >= 0) the means are weighted by it: for
+## field @code{weight} (N values, >= 0, not all zero; a row or a column,
+## checked as lafortune_fit checks it) the means are weighted by it: for
 ## @code{merl_samples} tables that makes them integrals over direction pairs
 ## (mean over the kept region's measure).  With y = @code{S.rgb}, f the model,
 ## s = @code{S.weight} (1 when absent) and, per channel,
@@ -84,22 +85,9 @@ function [e, info] = lafortune_error (model, S, metric = "plain")
     print_usage ();
   endif
   model = check_model (model, "lafortune_error");
-  if (! isstruct (S) || ! isscalar (S) || ! all (isfield (S, {"wi", "wo", "rgb"})))
-    error ("lafortune:badSamples",
-           "lafortune_error: S must be a struct with fields wi, wo, rgb (see merl_samples)");
-  endif
-  [wi, wo] = check_dirs (S.wi, S.wo, "lafortune_error");
-  n = rows (wi);
-  if (! (isnumeric (S.rgb) && isreal (S.rgb)) || ! isequal (size (S.rgb), [n 3])
-      || ! all (isfinite (S.rgb(:))))
-    error ("lafortune:badSamples",
-           "lafortune_error: S.rgb must be real, finite and N x 3 with N = rows (S.wi) = %d", n);
-  endif
-  if (n < 1)
-    error ("lafortune:badSamples", "lafortune_error: S has no samples");
-  endif
+  S = check_table (S, "lafortune_error", 1);
   spec = metric_spec (metric, S, "lafortune_error");
-  f = lafortune_eval (model, wi, wo);
+  f = lafortune_eval (model, S.wi, S.wo);
   ss = zeros (1, 3);
   for c = 1:3
     ss(c) = spec.ss (f(:,c), c);
@@ -196,6 +184,17 @@ endfunction
 %!error <METRIC must be one of> lafortune_error (struct ("rho_d", [0 0 0], "Cxy", [], "Cz", [], "e", []), struct ("wi", [0 0 1], "wo", [0 0 1], "rgb", [1 1 1]), "huber")
 %!error id=lafortune:badMetric lafortune_error (struct ("rho_d", [0 0 0], "Cxy", [], "Cz", [], "e", []), struct ("wi", [0 0 1], "wo", [0 0 1], "rgb", [1 1 1]), 3)
 %!error <needs a scene table> lafortune_error (struct ("rho_d", [0 0 0], "Cxy", [], "Cz", [], "e", []), struct ("wi", [0 0 1], "wo", [0 0 1], "rgb", [1 1 1]), "psnr")
+%!test
+%! ## the tables lafortune_fit accepts: a weight as a row, an empty weight
+%! w = [3 1];
+%! e1 = lafortune_error (m, setfield (S, "weight", w'));
+%! assert (lafortune_error (m, setfield (S, "weight", w)), e1);
+%! assert (lafortune_error (m, setfield (S, "weight", [])), lafortune_error (m, S));
+%! T = struct ("wi", repmat ([sind(30) 0 cosd(30)], 4, 1), "wo", repmat ([-sind(30) 0 cosd(30)], 4, 1),
+%!             "rgb", [1 2 3; 1 2 3; 2 3 4; 2 3 4] / 10, "weight", [1 2 3 4]);
+%! [mf, info] = lafortune_fit (T, 1);
+%! assert (lafortune_error (mf, T), info.rmse, 1e-12);
+
 %!error <S.weight must be N x 1> lafortune_error (struct ("rho_d", [0 0 0], "Cxy", [], "Cz", [], "e", []), struct ("wi", [0 0 1], "wo", [0 0 1], "rgb", [1 1 1], "weight", -1))
 %!error <S.weight must be N x 1> lafortune_error (struct ("rho_d", [0 0 0], "Cxy", [], "Cz", [], "e", []), struct ("wi", [0 0 1], "wo", [0 0 1], "rgb", [1 1 1], "weight", [1; 1]))
 %!error <already Ngan's cosine measure> lafortune_error (struct ("rho_d", [0 0 0], "Cxy", [], "Cz", [], "e", []), struct ("wi", [0 0 1], "wo", [0 0 1], "rgb", [1 1 1], "weight", 1, "measure", "cosine"), "cosine")

@@ -13,7 +13,7 @@
 ## directions, local frame) and @code{rgb} (N x 3), such as
 ## @code{merl_plane} (the paper's in-plane table), @code{merl_samples}
 ## (the whole hemisphere) or @code{merl_scene} (what a scene's pixels see)
-## return, and optionally @code{weight} (N x 1,
+## return, and optionally @code{weight} (N values, a row or a column,
 ## finite, >= 0, not all 0): each sample's weight in the least-squares
 ## objective and in the reported errors (for example a quadrature weight, so
 ## that the objective is an integral over directions); a sample of weight 0
@@ -200,8 +200,13 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
                             "start", [], "init", "grow", "jacobian", "analytic",
                             "bounds", true, "channels", 1:3));
   opt = check_opts (opt, nlobes);
+  ## the table as lafortune_error checks it; with a scene table's prior,
+  ## once more with the prior's rows
+  [S, wt] = check_table (S, "lafortune_fit", 4);
   [S, n0] = with_prior (S, opt.weight);
-  [S, wt] = check_samples (S);
+  if (n0 < rows (S.wi))
+    [S, wt] = check_table (S, "lafortune_fit", 4);
+  endif
   pkg_load_optim ();
 
   N = rows (S.wi);
@@ -449,40 +454,6 @@ function S = rows_of (S, k)
   endfor
 endfunction
 
-function [S, wt] = check_samples (S)
-  if (! isstruct (S) || ! isscalar (S) || ! all (isfield (S, {"wi", "wo", "rgb"})))
-    error ("lafortune:badSamples",
-           "lafortune_fit: S must be a struct with fields wi, wo, rgb (see merl_plane)");
-  endif
-  [S.wi, S.wo] = check_dirs (S.wi, S.wo, "lafortune_fit");
-  n = rows (S.wi);
-  if (! isnumeric (S.rgb) || ! isreal (S.rgb) || ! isequal (size (S.rgb), [n 3]))
-    error ("lafortune:badSamples", "lafortune_fit: S.rgb must be real N x 3 with N = rows (S.wi) = %d",
-           n);
-  endif
-  if (! all (isfinite (S.rgb(:))))
-    error ("lafortune:badSamples", "lafortune_fit: S.rgb must be finite (drop invalid samples)");
-  endif
-  if (n < 4)
-    error ("lafortune:badSamples", "lafortune_fit: S needs at least 4 samples, got %d", n);
-  endif
-  S.rgb = double (S.rgb);
-  if (isfield (S, "weight") && ! isempty (S.weight))
-    w = S.weight;
-    if (! isnumeric (w) || ! isreal (w) || ! isvector (w) || numel (w) != n
-        || ! all (isfinite (w)) || any (w < 0) || ! any (w > 0))
-      error ("lafortune:badSamples",
-             "lafortune_fit: S.weight must be N x 1 (N = %d), finite, >= 0 and not all zero", n);
-    endif
-    S.weight = double (w(:));
-    wt = S.weight;
-  else
-    if (isfield (S, "weight"))
-      S = rmfield (S, "weight");
-    endif
-    wt = ones (n, 1);
-  endif
-endfunction
 
 function opt = check_opts (opt, nlobes)
   weights = metric_spec ();
