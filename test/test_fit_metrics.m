@@ -169,6 +169,20 @@
 %! assert (info.trace{1}(end,2), info.rmse(1), 1e-12);
 
 %!test
+%! ## a table of fewer than 4 samples is fitted with its prior: the minimum
+%! ## counts the prior's rows too
+%! warning ("off", "lafortune:notConverged", "local");
+%! S = __scene (truth, 8, 7);
+%! S = struct ("wi", S.wi(1:3,:), "wo", S.wo(1:3,:), "rgb", S.rgb(1:3,:), "weight", S.weight(1:3));
+%! P = __plane (truth, 5);
+%! S.prior = struct ("wi", P.wi, "wo", P.wo, "rgb", P.rgb);
+%! S.prior_weight = 1;
+%! [m, info] = lafortune_fit (S, 1);
+%! assert (info.n, 3 + rows (P.wi));
+%! assert (info.rmse, lafortune_error (m, rmfield (S, {"prior", "prior_weight"})), 1e-12 * max (info.rmse));
+%!error <at least 4 samples, got 3> lafortune_fit (struct ("wi", repmat ([0 0 1], 3, 1), "wo", repmat ([0 0 1], 3, 1), "rgb", ones (3, 3)), 1)
+
+%!test
 %! ## samples on the horizon: 0 in the reported errors, as lafortune_eval has it
 %! warning ("off", "lafortune:notConverged", "local");
 %! [TI, TO] = ndgrid (0:5:90, -90:5:90);

@@ -15,9 +15,9 @@
 ## The run ends when leasqr's own test ends it (an iteration improves the
 ## sum of squares by less than @code{opt.tol} of it), or one iteration
 ## earlier, when the decrease that the Gauss-Newton step predicts is below
-## that (MINPACK's test, fit_recorder): leasqr then needs neither that
-## iteration nor the five dampings it tries before it gives up.  With
-## @code{opt.flat} false, only leasqr's own test.
+## half of that (MINPACK's predicted reduction, fit_recorder): leasqr then
+## needs neither that iteration nor the five dampings it tries before it
+## gives up.  With @code{opt.flat} false, only leasqr's own test.
 ##
 ## With @var{t0} (a @code{tic} value), every evaluation of the model is noted
 ## as a row [seconds since @var{t0}, objective, rmse] of @var{T}: the
@@ -63,11 +63,7 @@ function [p, iter, cvg, T] = fit_lm (D, p0, opt, t0 = [])
       if (! isfield (options, "bounds"))
         rethrow (err);
       endif
-      rec = fit_recorder (t0, ftol);
-      F = @(xx, pp) model_fun (D, pp, rec);
-      if (! ischar (dFdp))
-        dFdp = @(xx, f, pp, dpp, FF, varargin) model_jac (D, pp, f, rec);
-      endif
+      rec.rerun ();
       try
         [p, cvg, iter] = run_leasqr (rec, D.x, D.ty, p0, F, opt.tol, opt.max_iter, D.w, dp, dFdp,
                                      struct ());

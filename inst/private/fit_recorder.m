@@ -16,16 +16,22 @@
 ## for the Jacobian once per iteration, at its best point @var{p}; @var{w}
 ## the weights, @var{J} the Jacobian, @var{r} the residual there): true when
 ## the sum of squares ss = sumsq (w .* r) can no longer fall by @var{tol}
-## times itself.
-## That is MINPACK's test: the decrease that the Gauss-Newton step predicts
-## (leasqr's least damping, 1e-7 on the normalised squared singular values,
-## included) is below @var{tol} * ss.  It is computed only when the last
-## iteration's decrease was below 100 @var{tol} * ss (with linear
-## convergence the next one is smaller still), so most iterations cost
-## one sum of squares.  @code{rec.p} is then the point and @code{rec.iter}
-## the iterations done.  leasqr's own test needs one more iteration whose
+## times itself: the decrease that the Gauss-Newton step predicts (MINPACK's
+## predicted reduction) is below @var{tol} * ss / 2.  The half is a margin:
+## in these large-residual fits a step gains up to about 1.75 times its
+## prediction, and on both paper materials' in-plane tables (5 metrics, 1 to
+## 3 lobes, 180 runs from perturbed starts) the runs then end less than
+## 0.8 @var{tol} * ss above where leasqr's own test ends them (without the
+## margin, up to 3.2 @var{tol} * ss).  The prediction is computed only when
+## the last iteration's decrease was below 100 @var{tol} * ss (with linear
+## convergence the next one is smaller still), so most iterations cost one
+## sum of squares.  @code{rec.p} is then the point and @code{rec.iter} the
+## iterations done.  leasqr's own test needs one more iteration whose
 ## decrease falls short, and that iteration tries five dampings, one
 ## evaluation each, before it gives up.
+##
+## @code{rec.rerun ()} starts the test afresh for another run (the rows
+## stay).
 ## @end deftypefn
 classdef fit_recorder < handle
   properties
@@ -51,14 +57,20 @@ classdef fit_recorder < handle
       obj.ss = ss;
       obj.p = p;
       obj.iter += 1;
-      tf = last < 100 * obj.tol * ss && predicted_decrease (w .* J, r) < obj.tol * ss;
+      tf = last < 100 * obj.tol * ss && predicted_decrease (w .* J, r) < obj.tol * ss / 2;
+    endfunction
+    function rerun (obj)
+      obj.p = [];
+      obj.iter = -1;
+      obj.ss = Inf;
     endfunction
   endmethods
 endclassdef
 
-## The decrease of r'*r that the Gauss-Newton step predicts, with Jw's
-## columns normalised and their squared singular values (eigenvalues of the
-## normal matrix) at least 1e-7, leasqr's least damping
+## The decrease of r'*r that the Gauss-Newton step predicts: the squared
+## norm of r's projection on the columns of Jw, from the normal matrix with
+## its columns normalised.  A direction of (nearly) zero eigenvalue makes
+## it huge, so the run goes on: leasqr's own test then ends it
 function d = predicted_decrease (Jw, r)
   A = Jw' * Jw;
   g = Jw' * r;
@@ -67,5 +79,5 @@ function d = predicted_decrease (Jw, r)
   A = A ./ (s * s');
   g ./= s;
   [V, L] = eig ((A + A') / 2);
-  d = sum ((V' * g) .^ 2 ./ max (diag (L), 1e-7));
+  d = sum ((V' * g) .^ 2 ./ max (diag (L), realmin));
 endfunction

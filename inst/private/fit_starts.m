@@ -17,7 +17,7 @@
 ## exponents within half a decade, 8 per decade.  A start that no warm-up
 ## run brings closer (fit_channel) needs that: on the in-plane tables of
 ## both paper materials the first lobe's Levenberg-Marquardt run then takes
-## 4 to 6 iterations per channel instead of 6 to 9, to the same minimum.
+## 4 to 6 iterations per channel instead of 8 to 10, to the same minimum.
 ## @end deftypefn
 function P = fit_starts (D, p, refine = false)
   ## directions (Cxy, Cz) of the families: forward lobes from steep to flat,
