@@ -108,14 +108,17 @@ function [p, cvg, iter] = run_leasqr (rec, varargin)
   end_try_catch
 endfunction
 
-function f = model_fun (D, p, rec)
+## The model's values at P, transformed by the metric, for leasqr; the
+## trace notes the objective and rmse (the transform is done once)
+function ft = model_fun (D, p, rec)
   f = lafortune_core (p, D.x(:,1), D.x(:,2));
-  if (! isempty (rec.t0))
-    [o, e] = fit_objective (D, f);
-    rec.add (o, e);
-  endif
+  ft = f;
   if (! D.identity)
-    f = D.t (f, D.c);
+    ft = D.t (f, D.c);
+  endif
+  if (! isempty (rec.t0))
+    [o, e] = fit_objective (D, f, ft);
+    rec.add (o, e);
   endif
 endfunction
 
