@@ -14,7 +14,8 @@
 ##
 ## Every metric is a weighted sum of squares over the samples of a table
 ## @var{S} (fields @code{rgb}, N x 3, @code{wi}, N x 3, and the optional
-## ones below), per channel c:
+## ones below; a table as check_table returns it, which checks the weight),
+## per channel c:
 ##
 ## @example
 ## ss(c) = sum_k w(k,c) (t(f(k,c)) - t(y(k,c)))^2,    y = S.rgb, f = the model
@@ -110,14 +111,7 @@ function spec = metric_spec (metric, S, fname, delta)
   n = rows (y);
   s = ones (n, 1);
   if (isfield (S, "weight"))
-    s = S.weight;
-    if (! (isnumeric (s) && isreal (s)) || ! isequal (size (s), [n 1])
-        || ! all (isfinite (s)) || any (s < 0) || ! (sum (s) > 0))
-      error ("lafortune:badSamples",
-             "%s: S.weight must be N x 1 (N = %d), finite, >= 0 and not all 0",
-             fname, n);
-    endif
-    s = double (s);
+    s = S.weight;                  # N x 1 double, checked by check_table
   endif
   if (nargin < 4 || isempty (delta))
     delta = ones (1, 3);
