@@ -30,8 +30,8 @@
 ## decrease falls short, and that iteration tries five dampings, one
 ## evaluation each, before it gives up.
 ##
-## @code{rec.rerun ()} starts the test afresh for another run (the rows
-## stay).
+## @code{rec.rerun ()} starts the test afresh (the constructor does too),
+## for another run; the rows stay.
 ## @end deftypefn
 classdef fit_recorder < handle
   properties
@@ -39,13 +39,14 @@ classdef fit_recorder < handle
     tol = 0;
     T = zeros (0, 3);
     p = [];
-    iter = -1;
-    ss = Inf;
+    iter = [];
+    ss = [];
   endproperties
   methods
     function obj = fit_recorder (t0, tol)
       obj.t0 = t0;
       obj.tol = tol;
+      obj.rerun ();
     endfunction
     function add (obj, o, e)
       obj.T(end+1,:) = [toc(obj.t0), o, e];
