@@ -239,12 +239,16 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
     pspec.w = pspec.w(keep,:);
     pspec.ty = pspec.ty(keep,:);
   endif
-  [j, xc, xr, info_reduce, jg, jrep] = groups (x, wt(keep), opt);
-  if (isfield (S, "kind") && strcmp (S.kind, "scene"))
+  ## the coarse grid for starts and the guard are for the growing fit only
+  ## (from a given start, one run: fit_channel)
+  grow = strcmp (opt.init, "grow") && isempty (opt.start);
+  [j, xc, xr, info_reduce, jg, jrep] = groups (x, wt(keep), opt, grow);
+  G = [];
+  if (grow && isfield (S, "kind") && strcmp (S.kind, "scene"))
     ## a scene table: every pair a normal can make at its angles between
     ## light and viewer (the table itself has gaps between its pixels)
     G = fit_guard ("scene", x, sum (Sf.wi .* Sf.wo, 2));
-  else
+  elseif (grow)
     G = fit_guard (min ([Sf.wi(:,3); Sf.wo(:,3)]));
   endif
   z = zeros (nlobes, 3);
@@ -323,7 +327,7 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
   ss = channel_ss (rep, names, lafortune_eval (model, Srep.wi, Srep.wo));
   hss = nan (nlobes, 3);
   hss(nlobes,:) = ss.plain;
-  if (strcmp (opt.init, "grow") && isempty (opt.start))
+  if (grow)
     for k = 1:nlobes-1
       hss(k,:) = channel_ss (rep, {"plain"}, lafortune_eval (models{k}, Srep.wi, Srep.wo)).plain;
     endfor
@@ -337,7 +341,7 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
     info.trace{c} = best_trace (traces{c}, info.time(c), info.rmse(c),
                                 strcmp (info_reduce, "exact") && n0 >= N);
   endfor
-  if (! strcmp (opt.init, "grow") || ! isempty (opt.start))
+  if (! grow)
     models = {model};
   endif
   ## the table's name goes with the models (exports carry it)
@@ -510,9 +514,10 @@ endfunction
 ## cells when there are more than AUTO_GROUPS samples, or as "reduce" says)
 ## and the coarse grid that screens starts (JG: each group's cell, XR: the
 ## cells' positions; about "screen_samples" cells, or the groups themselves
-## when there are no more than that), and for each cell the group nearest
-## its position (REP), which stands for it in coarse_data.
-function [j, xc, xr, how, jg, rep] = groups (x, wt, opt)
+## when there are no more than that, or when COARSE is false), and for each
+## cell the group nearest its position (REP), which stands for it in
+## coarse_data.
+function [j, xc, xr, how, jg, rep] = groups (x, wt, opt, coarse)
   AUTO_GROUPS = 20000;
   AUTO_GRID = 512;
   if (isnumeric (opt.reduce))
@@ -529,7 +534,7 @@ function [j, xc, xr, how, jg, rep] = groups (x, wt, opt)
     how = sprintf ("grid %d", n);
   endif
   xr = xc; jg = (1:rows (xc))'; rep = jg;
-  if (rows (xc) > opt.screen_samples)
+  if (coarse && rows (xc) > opt.screen_samples)
     ## coarsen the groups (cells of about the wanted count)
     gw = accumarray (j, wt);
     n = 2 ^ ceil (log2 (sqrt (opt.screen_samples)));
