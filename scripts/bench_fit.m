@@ -9,8 +9,9 @@
 ## MINPACK, analytic Jacobian, one thread; skipped when Debian's python3-scipy
 ## is absent) on both paper materials, median times;
 ## full-hemisphere fits on every valid bin, reduced to (a, c) cells, against
-## the fit on all distinct (a, c) pairs; and merl_eval throughput.  Prints
-## tables; not a test.  Run: make bench
+## the fit on all distinct (a, c) pairs; the model's compiled engine against
+## its Octave arithmetic; and merl_eval throughput.  Prints tables; not a
+## test.  Run: make bench
 
 1;
 
@@ -52,6 +53,40 @@ for k = 1:3
   printf ("%-6d | %-10.3f %-10.4g | %-10.3f %-10.4g | %-7.1f %-9.3f\n", k, ta, mean (ia.rmse), ...
           tb(k), rb(k), ta / tb(k), rb(k) / mean (ia.rmse));
 endfor
+
+## the model's two engines: lafortune_core calls the oct-file
+## __lafortune_core__ when it is on the path, else does the same arithmetic
+## in Octave; the same fits, timed with the oct-file's folder off the path
+printf ("\nModel engines: (b) with the compiled lafortune_core (oct-file __lafortune_core__) against its Octave\n");
+printf ("arithmetic (the oct-file's folder off the path); median of 5 interleaved, all 3 channels, s\n");
+od = fileparts (which ("__lafortune_core__"));
+if (isempty (od))
+  printf ("skipped: the oct-file __lafortune_core__ is not built (make -C src)\n");
+else
+  ## every path entry that is the oct-file's folder (as given, maybe relative)
+  dirs = strsplit (path (), pathsep ());
+  hide = dirs(strcmp (cellfun (@canonicalize_file_name, dirs, "UniformOutput", false),
+                      canonicalize_file_name (od)));
+  printf ("%-6s | %-10s | %-10s | %-7s | %-9s\n", "lobes", "compiled", "Octave", "ratio", "same bits");
+  for k = 1:3
+    tcomp = toct = zeros (1, 5);
+    for r = 1:5
+      tic; mc = lafortune_fit (S, k); tcomp(r) = toc;
+      old = path ();
+      rmpath (hide{:});
+      unwind_protect
+        if (exist ("__lafortune_core__", "file"))
+          error ("bench_fit: the oct-file __lafortune_core__ cannot be taken off the path");
+        endif
+        tic; mo = lafortune_fit (S, k); toct(r) = toc;
+      unwind_protect_cleanup
+        path (old);
+      end_unwind_protect
+    endfor
+    printf ("%-6d | %-10.4f | %-10.4f | %-7.2f | %-9s\n", k, median (tcomp), median (toct),
+            median (toct) / median (tcomp), {"NO", "yes"}{isequal (mc, mo) + 1});
+  endfor
+endif
 
 ## the peer: scipy's MINPACK on the same table, model and start, for both
 ## paper materials
