@@ -51,20 +51,33 @@ namespace
         f[i] += L;
         if (J)
           {
-            const double live = t <= LOGMAX ? 1.0 : 0.0;
-            const double dLdb = e * std::exp (std::fmax (std::fmin (t - lb, LOGMAX), LOGMIN)) * live;
+            // where the lobe is capped its slope is 0 (not e * exp (...) * 0,
+            // which is NaN for an e that makes e * exp (300) overflow)
+            const bool live = t <= LOGMAX;
+            const double dLdb = live ? e * std::exp (std::fmax (std::fmin (t - lb, LOGMAX), LOGMIN)) : 0.0;
             jx[i] = dLdb * sxy[i];
             jz[i] = dLdb * sz[i];
-            je[i] = L * lb * live;
+            je[i] = L * lb * (live ? 1.0 : 0.0);
           }
       }
   }
 
-  bool
-  real_vector (const octave_value& v)
+  // "" when V is a real full double vector (a column when COLUMN), else
+  // what it is instead
+  std::string
+  not_vector (const octave_value& v, bool column)
   {
-    return v.is_double_type () && v.isreal () && ! v.issparse ()
-           && v.ndims () == 2 && (v.rows () == 1 || v.columns () == 1 || v.isempty ());
+    if (! v.is_double_type ())
+      return v.class_name ();
+    if (v.iscomplex ())
+      return "complex double";
+    if (v.issparse ())
+      return "sparse double";
+    const bool vec = v.ndims () == 2 && (v.columns () == 1 || v.isempty ()
+                                         || (! column && v.rows () == 1));
+    if (! vec)
+      return v.dims ().str () + " double";
+    return "";
   }
 }
 
@@ -73,17 +86,21 @@ DEFUN_DLD (__lafortune_core__, args, nargout,
 @deftypefn {} {[@var{f}, @var{J}] =} __lafortune_core__ (@var{p}, @var{sxy}, @var{sz})\n\
 Internal: the compiled arithmetic of the private @code{lafortune_core}\n\
 (see there); @var{p} = [rho_d; Cxy_1; Cz_1; e_1; ...] (1 + 3 k real\n\
-doubles), @var{sxy} and @var{sz} real double vectors of equal length.\n\
+doubles), @var{sxy} and @var{sz} real double columns of equal length.\n\
 @var{f} is N x 1, @var{J} N x numel (@var{p}).\n\
 @end deftypefn")
 {
   if (args.length () != 3)
     print_usage ();
   for (int a = 0; a < 3; a++)
-    if (! real_vector (args(a)))
-      error_with_id ("lafortune:badInput",
-                     "__lafortune_core__: argument %d must be a real double vector, got a %s %s",
-                     a + 1, args(a).dims ().str ().c_str (), args(a).class_name ().c_str ());
+    {
+      const std::string what = not_vector (args(a), a > 0);
+      if (! what.empty ())
+        error_with_id ("lafortune:badInput",
+                       "__lafortune_core__: %s must be a real double %s, got %s",
+                       a == 0 ? "P" : (a == 1 ? "SXY" : "SZ"),
+                       a == 0 ? "vector" : "column", what.c_str ());
+    }
   const octave_idx_type np = args(0).numel ();
   if (np < 1 || (np - 1) % 3 != 0)
     error_with_id ("lafortune:badInput",
@@ -126,13 +143,16 @@ doubles), @var{sxy} and @var{sz} real double vectors of equal length.\n\
 
 /*
 %!error <Invalid call> __lafortune_core__ (1, 2)
-%!error <argument 1 must be a real double vector> __lafortune_core__ (single (1), 0, 0)
-%!error <argument 2 must be a real double vector> __lafortune_core__ (1, 1i, 0)
-%!error <argument 3 must be a real double vector> __lafortune_core__ (1, 0, ones (2))
-%!error <argument 1 must be a real double vector> __lafortune_core__ ({1}, 0, 0)
+%!error <P must be a real double vector, got single> __lafortune_core__ (single (1), 0, 0)
+%!error <SXY must be a real double column, got complex double> __lafortune_core__ (1, 1i, 0)
+%!error <SZ must be a real double column, got 2x2 double> __lafortune_core__ (1, 0, ones (2))
+%!error <SZ must be a real double column, got 1x2 double> __lafortune_core__ (1, [0; 1], [0 1])
+%!error <SXY must be a real double column, got sparse double> __lafortune_core__ (1, sparse (1), 0)
+%!error <P must be a real double vector, got cell> __lafortune_core__ ({1}, 0, 0)
+%!error <P must be a real double vector, got 2x2 double> __lafortune_core__ (ones (2), 0, 0)
 %!error <P must have 1 \+ 3 k elements> __lafortune_core__ ([1 2], 0, 0)
 %!error <P must have 1 \+ 3 k elements> __lafortune_core__ ([], 0, 0)
-%!error <SXY and SZ must have equal lengths> __lafortune_core__ (1, [0 1], 0)
+%!error <SXY and SZ must have equal lengths> __lafortune_core__ (1, [0; 1], 0)
 %!test
 %! [f, J] = __lafortune_core__ ([pi; -1; 1; 2], [-0.5; 0.5], [0.5; 0.5]);
 %! assert (f, [2; 1], eps);

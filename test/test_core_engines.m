@@ -5,9 +5,10 @@
 ## (the one evaluation of the model) calls the oct-file __lafortune_core__
 ## when it is built and otherwise does the arithmetic itself, in Octave; that
 ## Octave arithmetic is the reference.  Here the oct-file is hidden by taking
-## its folder off the path, and values (lafortune_eval) and whole fits
-## (lafortune_fit, which uses the Jacobian at every iteration) are compared
-## with isequal, on ordinary, stiff and extreme models.
+## its folder off the path, and values and Jacobians (lafortune_core itself,
+## called from its private folder; lafortune_eval) and whole fits
+## (lafortune_fit) are compared bit for bit, on ordinary, stiff and extreme
+## models.
 
 %!function varargout = __octave_engine (fn)
 %!  ## FN () with the oct-file __lafortune_core__ off the path
@@ -38,6 +39,57 @@
 %!  wi = [sin(ti) .* cos(pi_), sin(ti) .* sin(pi_), cos(ti)];
 %!  wo = [sin(to) .* cos(po), sin(to) .* sin(po), cos(to)];
 %!endfunction
+
+%!function tf = __same_bits (a, b)
+%!  tf = isequal (size (a), size (b)) && isequal (typecast (a(:), "uint64"), typecast (b(:), "uint64"));
+%!endfunction
+
+%!test
+%! ## values and Jacobians directly, bit for bit (NaN payloads and signed
+%! ## zeros too): the oct-file against lafortune_core's Octave arithmetic
+%! ## (the private function, called from its folder), on random and
+%! ## extreme parameters and bases: NaN, Inf, 0, denormals, huge values,
+%! ## e = 0, negative, huge exponents, bases above 1 (the cap at exp(300)),
+%! ## no lobe, no rows
+%! here = pwd ();
+%! state = rand ("state");
+%! unwind_protect
+%!   cd (fullfile (fileparts (which ("lafortune_eval")), "private"));
+%!   rand ("state", 7);
+%!   special = [NaN -Inf Inf 0 -0 realmin/4 -realmin 1e-300 1e300 -1e300 1 -1 2];
+%!   evals = [0 -2 0.5 1 3 50 1e3 1e7 1e200 NaN Inf -Inf];
+%!   n = 400;
+%!   for trial = 1:60
+%!     nl = mod (trial, 4);
+%!     p = [rand * 2; (rand (3 * nl, 1) - 0.5) .* 10 .^ (4 * rand (3 * nl, 1) - 2)];
+%!     p(4:3:end) = evals(randi (numel (evals), nl, 1));
+%!     if (mod (trial, 3) == 0 && nl > 0)
+%!       p(randi (numel (p))) = special(randi (numel (special)));
+%!     endif
+%!     m = n * (trial != 1);                      # one trial with no rows
+%!     sxy = 2 * rand (m, 1) - 1; sz = rand (m, 1) .* (1 + (trial > 40));
+%!     k = randperm (m, min (m, 20));
+%!     sxy(k(1:end/2)) = special(randi (numel (special), numel (k(1:end/2)), 1));
+%!     sz(k(end/2+1:end)) = special(randi (numel (special), numel (k(end/2+1:end)), 1));
+%!     [fc, Jc] = __lafortune_core__ (p, sxy, sz);
+%!     fc1 = __lafortune_core__ (p, sxy, sz);
+%!     [fo, Jo] = __octave_engine (@() lafortune_core (p, sxy, sz));
+%!     fo1 = __octave_engine (@() lafortune_core (p, sxy, sz));
+%!     assert (__same_bits (fc, fo) && __same_bits (Jc, Jo) && __same_bits (fc1, fo1),
+%!             sprintf ("trial %d, p = %s: the engines differ", trial, mat2str (p', 4)));
+%!   endfor
+%!   ## exactly at the cap (e log b = 300: the lobe is live there)
+%!   [fc, Jc] = __lafortune_core__ ([0; 1; 0; 300], exp (1), 0);
+%!   [fo, Jo] = __octave_engine (@() lafortune_core ([0; 1; 0; 300], exp (1), 0));
+%!   assert (__same_bits (fc, fo) && __same_bits (Jc, Jo));
+%!   assert (Jc(2) > 0);
+%!   ## the Jacobian is finite where the lobe is capped, even for e = 1e200
+%!   [~, J] = __octave_engine (@() lafortune_core ([0; 1; 0; 1e200], 2, 0));
+%!   assert (J, [1/pi 0 0 0]);
+%! unwind_protect_cleanup
+%!   cd (here);
+%!   rand ("state", state);
+%! end_unwind_protect
 
 %!test
 %! ## values: ordinary, sharp, capped (exp(300)), e = 0, tiny bases,
@@ -88,3 +140,34 @@
 %! [mo, io] = __octave_engine (@() lafortune_fit (S, 1));
 %! assert (isequal (mc, mo));
 %! assert (isequal (ic.rmse, io.rmse));
+
+%!test
+%! ## an oct-file that does not load (here a damaged one ahead on the path):
+%! ## one warning lafortune:noOctFile, then the Octave arithmetic, the same
+%! ## values; in a fresh octave-cli, as lafortune_core remembers it
+%! m = struct ("rho_d", [0.1 0.2 0.3], "Cxy", [-1 -0.9 -1.1], "Cz", [1 0.8 0.95], "e", [10 20 5]);
+%! [wi, wo] = __dirs (50);
+%! f = lafortune_eval (m, wi, wo);
+%! junk = tempname (); mkdir (junk);
+%! scr = [tempname() ".m"];
+%! unwind_protect
+%!   fid = fopen (fullfile (junk, "__lafortune_core__.oct"), "w");
+%!   fwrite (fid, uint8 (1:100)); fclose (fid);
+%!   fid = fopen (scr, "w");
+%!   fprintf (fid, "addpath ('%s'); addpath ('%s'); addpath ('%s');\n",
+%!            fileparts (which ("__lafortune_core__")), fileparts (which ("lafortune_eval")), junk);
+%!   fprintf (fid, "m = struct ('rho_d', %s, 'Cxy', %s, 'Cz', %s, 'e', %s);\n",
+%!            mat2str (m.rho_d, 17), mat2str (m.Cxy, 17), mat2str (m.Cz, 17), mat2str (m.e, 17));
+%!   fprintf (fid, "wi = %s; wo = %s; f = %s;\n", mat2str (wi, 17), mat2str (wo, 17), mat2str (f, 17));
+%!   fprintf (fid, "g1 = lafortune_eval (m, wi, wo); g2 = lafortune_eval (m, wi, wo);\n");
+%!   fprintf (fid, "[~, id] = lastwarn (); printf ('same %%d %%d, %%s\\n', isequal (g1, f), isequal (g2, f), id);\n");
+%!   fclose (fid);
+%!   [st, out] = system (sprintf ("octave-cli --no-gui --norc --no-history '%s' 2>&1", scr));
+%! unwind_protect_cleanup
+%!   unlink (scr);
+%!   confirm_recursive_rmdir (false, "local");
+%!   rmdir (junk, "s");
+%! end_unwind_protect
+%! assert (st, 0, out);
+%! assert (! isempty (strfind (out, "same 1 1, lafortune:noOctFile")), out);
+%! assert (numel (strfind (out, "does not work")), 1, out);
