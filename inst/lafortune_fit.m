@@ -461,7 +461,6 @@ function S = rows_of (S, k)
   endfor
 endfunction
 
-
 function opt = check_opts (opt, nlobes)
   weights = metric_spec ();
   if (! ischar (opt.weight) || ! any (strcmp (opt.weight, weights)))
