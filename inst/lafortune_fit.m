@@ -6,8 +6,9 @@
 ## @deftypefnx {lafortune} {@var{model} =} lafortune_fit (@var{S}, @var{nlobes}, @var{name}, @var{value}, @dots{})
 ## @deftypefnx {lafortune} {[@var{model}, @var{info}, @var{models}] =} lafortune_fit (@dots{})
 ## Fit an isotropic Lafortune model with @var{nlobes} lobes (1 to 8) to a
-## table of BRDF samples, separately per RGB channel, with the optim
-## package's @code{leasqr} (Levenberg-Marquardt).
+## table of BRDF samples, separately per RGB channel (or with lobes shared
+## across the channels, @code{"color"}), with the optim package's
+## @code{leasqr} (Levenberg-Marquardt).
 ##
 ## @var{S} is a struct with fields @code{wi}, @code{wo} (N x 3 unit
 ## directions, local frame) and @code{rgb} (N x 3), such as
@@ -114,6 +115,24 @@
 ## @item "channels"
 ## which channels to fit (default 1:3); the others keep rho_d = 0 and zero
 ## lobes.
+## @item "color"
+## @code{"separate"} (default; the paper's): each channel is fitted alone,
+## and each channel's lobe finds its own direction and exponent.
+## @code{"shared"}: each lobe has one direction (Cxy, Cz) and one exponent
+## for every channel and an amplitude per channel (after Ngan et al. 2005),
+## rho_d per channel, all fitted in one leasqr run over the channels
+## (3 + 5 @var{nlobes} parameters for three channels: the brightest
+## channel's amplitude is the size of (Cxy, Cz), the others' are
+## amplitudes t >= 0).  The objective is the sum of the channels' sums of
+## squares, and the data of every channel are divided by one scale.  A
+## highlight then keeps its colour across the sphere.  The result is an
+## ordinary model: channel c's lobe is folded into its direction,
+## C_c = t_c^(1/e) (Cxy, Cz), which is exact, so every export, renderer and
+## tool takes it as it is.  Every table, metric and start works in both
+## modes; with @code{"shared"}, @code{info}'s per-channel counts and times
+## are those of the one run, and a channel's trace is its rmse along the
+## joint run (the joint objective never rises, a single channel's rmse
+## may).
 ## @end table
 ##
 ## @var{info} holds @code{n} (samples), @code{groups} (how many the fit
@@ -181,6 +200,7 @@
 ## H = merl_samples (brdf);                     # every valid bin
 ## m3 = lafortune_fit (H, 3);                   # on (a, c) cells, seconds
 ## m3l = lafortune_fit (H, 3, "weight", "log");  # another metric
+## m3s = lafortune_fit (H, 3, "color", "shared"); # one lobe shape for R, G, B
 ## sc = scene_make ("sphere", "size", [64 64], "spp", 1);
 ## ms = lafortune_fit (merl_scene (brdf, sc), 2, "weight", "psnr");  # the render's best
 ## @end group
@@ -200,7 +220,7 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
                     struct ("weight", "plain", "max_iter", 100, "tol", 1e-7, "tries", [],
                             "screen_iter", 8, "screen_samples", 500, "reduce", "auto",
                             "start", [], "init", "grow", "jacobian", "analytic",
-                            "bounds", true, "channels", 1:3));
+                            "bounds", true, "channels", 1:3, "color", "separate"));
   opt = check_opts (opt, nlobes);
   ## the table as lafortune_error checks it; with a scene table's prior,
   ## once more with the prior's rows
@@ -230,6 +250,13 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
   Sf = rows_of (S, keep);
   x = xall(keep,:);
   sc = max (abs (Sf.rgb), [], 1);
+  shared = strcmp (opt.color, "shared");
+  if (shared)
+    ## one scale for the channels that share lobes; the reference channel
+    ## (whose lobe is the plain Lafortune lobe, shared_lobes) is the largest
+    [scmax, iref] = max (sc(opt.channels));
+    sc(:) = scmax;
+  endif
   sc(! (sc > 0)) = 1;
   Ss = Sf;
   Ss.rgb = Sf.rgb ./ sc;
@@ -258,7 +285,7 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
     models{k} = struct ("rho_d", [0 0 0], "Cxy", zeros (k, 3), "Cz", zeros (k, 3), "e", ones (k, 3));
   endfor
   nan3 = nan (1, 3);
-  info = struct ("nlobes", nlobes, "weight", opt.weight, "n", rows (x),
+  info = struct ("nlobes", nlobes, "weight", opt.weight, "color", opt.color, "n", rows (x),
                  "groups", rows (xc), "reduce", info_reduce,
                  "rmse", nan3, "rel_rmse", nan3, "log_rmse", nan3, "cos_rmse", nan3,
                  "error", nan3,
@@ -267,35 +294,23 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
                  "trace", {cell(1, 3)}, "history", nan (nlobes, 3),
                  "lobe_time", nan (nlobes, 3));
   traces = cell (1, 3);
+  if (shared)
+    [models, info, traces] = fit_shared (Ss, Sf, fspec, pspec, sc, iref, j, xc, xr, jg, jrep, G,
+                                         nlobes, opt, models, info);
+    model = models{nlobes};
+  endif
   for c = opt.channels(:)'
+    if (shared)
+      break;
+    endif
     t0 = tic ();
-    y = Ss.rgb(:,c);
-    if (any (y < 0) && ! any (y > 0))
-      warning ("lafortune:negativeData",
-               "lafortune_fit: channel %d has no positive value (a BRDF is non-negative); its fit is the zero model",
-               c);
-    endif
-    D = fit_data (fspec, c, j, xc, y);
-    D.s = sc(c);
-    ## the trace's rmse: the fit's own objective times D.s when that is the
-    ## plain one, else the plain metric's groups (fit_objective)
-    D.same = strcmp (opt.weight, "plain");
-    if (! D.same)
-      D.P = fit_data (pspec, c, j, xc, Sf.rgb(:,c));
-    endif
-    if (rows (xr) == rows (xc))
-      R = D;
-    else
-      R = coarse_data (D, jg, jrep);
-    endif
+    [D, R] = channel_data (Ss, Sf, fspec, pspec, sc, c, j, xc, xr, jg, jrep, opt);
     ## a given start (in the data's units), or none: grow lobe by lobe
     p0 = [];
     if (! isempty (opt.start))
       p0 = model_params (opt.start, c);
     elseif (strcmp (opt.init, "plain"))
-      ## the paper's naive start
-      p0 = [0.1; repmat([-1; 1; 0], nlobes, 1)];
-      p0(4:3:end) = 10 * (1:nlobes);
+      p0 = plain_start (nlobes, 1);
     endif
     if (! isempty (p0))
       p0 = fit_unscale (p0, 1 / sc(c));
@@ -307,18 +322,8 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
       endif
     endfor
     model = models{nlobes};
-    info.time(c) = toc (t0);
-    info.iterations(c) = ch.iter;
-    info.full_iterations(c) = ch.full_iter;
-    info.rejected(c) = ch.rejected;
-    info.converged(c) = ch.cvg;
-    info.lobe_time(:,c) = ch.ktime(:);
+    info = channel_info (info, c, toc (t0), ch, nlobes, opt);
     traces{c} = ch.trace;
-    if (! ch.cvg)
-      warning ("lafortune:notConverged",
-               "lafortune_fit: channel %d (%d lobes) did not converge in %d iterations; the parameters are finite but may not be optimal",
-               c, nlobes, opt.max_iter);
-    endif
   endfor
   ## the reported errors: lafortune_error's values (metric_spec's finish) of
   ## the models evaluated as it evaluates them (lafortune_eval: 0 on or below
@@ -350,6 +355,95 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
     for k = 1:numel (models)
       models{k}.name = S.name;
     endfor
+  endif
+endfunction
+
+## One channel's data D (fit_data, scaled units) and its coarse grid R
+function [D, R] = channel_data (Ss, Sf, fspec, pspec, sc, c, j, xc, xr, jg, jrep, opt)
+  y = Ss.rgb(:,c);
+  if (any (y < 0) && ! any (y > 0))
+    warning ("lafortune:negativeData",
+             "lafortune_fit: channel %d has no positive value (a BRDF is non-negative); its fit is the zero model",
+             c);
+  endif
+  D = fit_data (fspec, c, j, xc, y);
+  D.s = sc(c);
+  ## the trace's rmse: the fit's own objective times D.s when that is the
+  ## plain one, else the plain metric's groups (fit_objective)
+  D.same = strcmp (opt.weight, "plain");
+  if (! D.same)
+    D.P = fit_data (pspec, c, j, xc, Sf.rgb(:,c));
+  endif
+  if (rows (xr) == rows (xc))
+    R = D;
+  else
+    R = coarse_data (D, jg, jrep);
+  endif
+endfunction
+
+## The fit with lobes shared across the channels (opt.channels): their
+## data stacked (fit_stack) and fitted as one problem (fit_channel), with
+## the reference channel IREF (its position among opt.channels) and one
+## scale SC for all; the models get each channel's folded lobes
+function [models, info, traces] = fit_shared (Ss, Sf, fspec, pspec, sc, iref, j, xc, xr, jg, jrep, G,
+                                              nlobes, opt, models, info)
+  t0 = tic ();
+  chs = opt.channels(:)';
+  nch = numel (chs);
+  Ds = Rs = cell (1, nch);
+  for i = 1:nch
+    [Ds{i}, Rs{i}] = channel_data (Ss, Sf, fspec, pspec, sc, chs(i), j, xc, xr, jg, jrep, opt);
+  endfor
+  D = fit_stack (Ds, iref);
+  R = fit_stack (Rs, iref);
+  s = sc(chs(1));
+  p0 = [];
+  if (! isempty (opt.start))
+    p0 = shared_lobes ("join", arrayfun (@(c) model_params (opt.start, c), chs, "uniformoutput", false),
+                       iref);
+  elseif (strcmp (opt.init, "plain"))
+    p0 = plain_start (nlobes, nch);
+  endif
+  if (! isempty (p0))
+    p0 = shared_lobes ("unscale", p0, 1 / s, iref, nch);
+  endif
+  ch = fit_channel (D, R, nlobes, opt, G, p0);
+  for k = 1:numel (ch.ps)
+    if (! isempty (ch.ps{k}))
+      P = shared_lobes ("split", shared_lobes ("unscale", ch.ps{k}, s, iref, nch), iref, nch);
+      for i = 1:nch
+        models{k} = set_params (models{k}, chs(i), P{i});
+      endfor
+    endif
+  endfor
+  traces = cell (1, 3);
+  t = toc (t0);
+  for i = 1:nch
+    info = channel_info (info, chs(i), t, ch, nlobes, opt, i == 1);
+    traces{chs(i)} = ch.trace(:,[1 2 2+i]);
+  endfor
+endfunction
+
+## The paper's naive start for NCH channels: rho_d = 0.1, lobe k: Cxy = -1,
+## Cz = 1, e = 10 k (for shared lobes, every channel's amplitude 1)
+function p0 = plain_start (nlobes, nch)
+  lobe = [-1; 1; 0; ones(nch - 1, 1)];
+  p0 = [0.1 * ones(nch, 1); repmat(lobe, nlobes, 1)];
+  p0(nch+3:2+nch:end) = 10 * (1:nlobes);
+endfunction
+
+## INFO's per-channel counts of channel C from the fit CH (T seconds)
+function info = channel_info (info, c, t, ch, nlobes, opt, warn = true)
+  info.time(c) = t;
+  info.iterations(c) = ch.iter;
+  info.full_iterations(c) = ch.full_iter;
+  info.rejected(c) = ch.rejected;
+  info.converged(c) = ch.cvg;
+  info.lobe_time(:,c) = ch.ktime(:);
+  if (! ch.cvg && warn)
+    warning ("lafortune:notConverged",
+             "lafortune_fit: channel %d (%d lobes) did not converge in %d iterations; the parameters are finite but may not be optimal",
+             c, nlobes, opt.max_iter);
   endif
 endfunction
 
@@ -470,6 +564,10 @@ function opt = check_opts (opt, nlobes)
   if (! ischar (opt.init) || ! any (strcmp (opt.init, {"grow", "plain"})))
     error ("lafortune:badOption", "lafortune_fit: INIT must be \"grow\" or \"plain\"");
   endif
+  if (! ischar (opt.color) || ! any (strcmpi (opt.color, {"separate", "shared"})))
+    error ("lafortune:badOption", "lafortune_fit: COLOR must be \"separate\" or \"shared\"");
+  endif
+  opt.color = lower (opt.color);
   if (! ischar (opt.jacobian) || ! any (strcmp (opt.jacobian, {"analytic", "numeric"})))
     error ("lafortune:badOption", "lafortune_fit: JACOBIAN must be \"analytic\" or \"numeric\"");
   endif
@@ -885,6 +983,130 @@ endfunction
 %!   assert (i3.rmse .^ 2 <= i1.rmse .^ 2 * (1 + 1e-12));
 %! endfor
 
+%!function m = __lobes3 (rho_d, C, e, t)
+%!  ## a model whose lobes share direction C(k,:) and exponent e(k) across
+%!  ## R, G, B, with amplitudes t(k,:)
+%!  nl = rows (C);
+%!  m = struct ("rho_d", rho_d, "Cxy", zeros (nl, 3), "Cz", zeros (nl, 3), "e", repmat (e(:), 1, 3));
+%!  for k = 1:nl
+%!    g = t(k,:) .^ (1 / e(k));
+%!    m.Cxy(k,:) = g * C(k,1); m.Cz(k,:) = g * C(k,2);
+%!  endfor
+%!endfunction
+%!function __assert_shared (m)
+%!  ## one exponent and one direction per lobe
+%!  assert (m.e(:,1) == m.e(:,2) & m.e(:,2) == m.e(:,3));
+%!  for k = 1:rows (m.Cxy)
+%!    C = [m.Cxy(k,:); m.Cz(k,:)];
+%!    assert (abs (C(1,:) .* C(2,[2 3 1]) - C(2,:) .* C(1,[2 3 1])) <= 1e-12 * max (abs (C(:))) ^ 2);
+%!  endfor
+%!endfunction
+
+%!test
+%! ## shared lobes: a shared-lobe model is recovered from its own data at 1, 2
+%! ## and 3 lobes (one of them with no blue), and the result has one
+%! ## direction and exponent per lobe; the fits grow monotonically
+%! truth = __lobes3 ([0.05 0.1 0.02], [-1 1; -0.7 0.72; 0.5 0.5], [200 8 3], [1 0.5 0.2; 0.3 0.6 1; 0.2 0.2 0]);
+%! for n = 1:3
+%!   t = truth; t.Cxy = t.Cxy(1:n,:); t.Cz = t.Cz(1:n,:); t.e = t.e(1:n,:);
+%!   S = __plane (t);
+%!   [m, info, ms] = lafortune_fit (S, n, "color", "shared");
+%!   assert (info.color, "shared");
+%!   assert (info.rel_rmse < 1e-6);
+%!   __assert_shared (m);
+%!   assert (sort (m.e(:,1)), sort (t.e(:,1)), 1e-5 * max (t.e(:)));
+%!   assert (m.rho_d, t.rho_d, 1e-6);
+%!   assert (all (diff (info.history) <= 1e-15));
+%!   assert (numel (ms), n);
+%! endfor
+
+%!test
+%! ## shared lobes on noisy data: one direction and exponent per lobe, every
+%! ## metric, the trace ends at each channel's rmse; separate fits, with 2
+%! ## more parameters per lobe, fit the plain error at least as well
+%! truth = __lobes3 ([0.2 0.1 0.05], [-1 1; -0.6 0.65], [60 4], [1 0.8 0.5; 0.3 0.5 1]);
+%! S = __plane (truth, 0:2:80, -80:2:80);
+%! randn ("state", 11);
+%! S.rgb .*= 1 + 0.1 * randn (size (S.rgb));
+%! for w = {"plain", "cosine", "relative", "log", "cuberoot"}
+%!   [m, info] = lafortune_fit (S, 2, "weight", w{1}, "color", "shared");
+%!   __assert_shared (m);
+%!   assert (all (isfinite ([m.rho_d m.Cxy(:)' m.Cz(:)' m.e(:)'])));
+%!   for c = 1:3
+%!     assert (info.trace{c}(end,2), info.rmse(c), 1e-9 * info.rmse(c));
+%!   endfor
+%!   assert (info.error, lafortune_error (m, S, w{1}), 1e-9 * max (info.error));
+%! endfor
+%! [~, i1] = lafortune_fit (S, 2, "color", "shared");
+%! [~, i2] = lafortune_fit (S, 2);
+%! assert (sumsq (i2.rmse) <= sumsq (i1.rmse) * (1 + 1e-6));
+
+%!test
+%! ## shared lobes: scale invariance, also with one scale per channel
+%! truth = __lobes3 ([0.2 0.1 0.05], [-0.9 0.8], 30, [1 0.4 0.1]);
+%! S = __plane (truth, 0:4:80, -80:4:80);
+%! for w = {"plain", "log"}
+%!   m1 = lafortune_fit (S, 1, "weight", w{1}, "color", "shared");
+%!   f1 = lafortune_eval (m1, S.wi, S.wo);
+%!   for c = [1e-12 1e12]
+%!     Sc = S; Sc.rgb = c * S.rgb;
+%!     fc = lafortune_eval (lafortune_fit (Sc, 1, "weight", w{1}, "color", "shared"), S.wi, S.wo) / c;
+%!     assert (max (abs (fc(:) - f1(:))) <= 1e-8 * max (abs (f1(:))), sprintf ("%s, c = %g", w{1}, c));
+%!   endfor
+%! endfor
+
+%!test
+%! ## shared lobes: stiff lobes (e = 1e4), values over ten decades, the
+%! ## paper's plain start, a given start, channels 1 and 3 only, and the
+%! ## numeric Jacobian
+%! truth = __lobes3 (pi * 1e-6 * [1 2 3], [-1 1], 1e4, [1e4 3e3 1e3]);
+%! S = __plane (truth, 0:2:80, -80:0.25:80);
+%! [m, info] = lafortune_fit (S, 1, "color", "shared", "weight", "log");
+%! __assert_shared (m);
+%! assert (info.log_rmse < 1e-3);
+%! assert (m.e(1), 1e4, 10);
+%! t2 = __lobes3 ([0.05 0.1 0.02], [-1 1; -0.7 0.72], [200 8], [1 0.5 0.2; 0.3 0.6 1]);
+%! S2 = __plane (t2);
+%! [m, info] = lafortune_fit (S2, 2, "color", "shared", "start", t2);
+%! assert (info.rel_rmse < 1e-9);
+%! [m, info] = lafortune_fit (S2, 2, "color", "shared", "init", "plain");
+%! assert (all (isfinite ([m.rho_d m.Cxy(:)' m.Cz(:)' m.e(:)'])));
+%! [m, info] = lafortune_fit (S2, 2, "color", "shared", "channels", [1 3]);
+%! assert (m.e(:,1), m.e(:,3));
+%! assert (m.rho_d(2), 0);
+%! assert (isnan (info.rmse(2)));
+%! assert (info.rel_rmse([1 3]) < 1e-6);
+%! [m, info] = lafortune_fit (S2, 1, "color", "shared", "jacobian", "numeric");
+%! __assert_shared (m);
+
+%!test
+%! ## shared lobes on the whole hemisphere (grid cells) and on a scene table
+%! ## with the image's weights: finite, shared, and the exported files give
+%! ## back the same model
+%! truth = __lobes3 ([0.1 0.05 0.02], [-1 0.9], 40, [1 0.6 0.3]);
+%! brdf = merl_synth (truth);
+%! [m, info] = lafortune_fit (merl_samples (brdf, "max_samples", 30000), 1, "color", "shared");
+%! __assert_shared (m);
+%! assert (info.rel_rmse < 1e-3);
+%! sc = scene_make ("sphere", "size", [24 24], "spp", 1);
+%! T = merl_scene (brdf, sc);
+%! [m, info] = lafortune_fit (T, 2, "color", "shared", "weight", "psnr");
+%! __assert_shared (m);
+%! assert (info.error > 40);
+%! d = tempname (); mkdir (d);
+%! unwind_protect
+%!   f = fullfile (d, "m.json");
+%!   lafortune_export (m, f, "json");
+%!   r = lafortune_import (f);
+%!   for fld = {"rho_d", "Cxy", "Cz", "e"}
+%!     assert (isequal (r.(fld{1}), m.(fld{1})));
+%!   endfor
+%!   __assert_shared (r);
+%! unwind_protect_cleanup
+%!   confirm_recursive_rmdir (false, "local");
+%!   rmdir (d, "s");
+%! end_unwind_protect
+
 %!warning <did not converge> lafortune_fit (__plane (struct ("rho_d", [0.2 0.1 0.05], "Cxy", [-0.9 -1 -1.1], "Cz", [0.8 1 0.9], "e", [5 30 80])), 1, "max_iter", 1, "channels", 1);
 
 %!shared S0
@@ -907,3 +1129,5 @@ endfunction
 %!error <S.weight must be N x 1> lafortune_fit (setfield (S0, "weight", [1 1 NaN 1 1]'), 1)
 %!error <REDUCE must be> lafortune_fit (S0, 1, "reduce", "coarse")
 %!error <REDUCE must be> lafortune_fit (S0, 1, "reduce", 0)
+%!error <COLOR must be "separate" or "shared"> lafortune_fit (S0, 1, "color", "joint")
+%!error id=lafortune:badOption lafortune_fit (S0, 1, "color", 3)

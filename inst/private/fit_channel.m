@@ -3,7 +3,8 @@
 
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{ch} =} fit_channel (@var{D}, @var{R}, @var{nlobes}, @var{opt}, @var{G}, @var{p0})
-## Fit one channel (private): @var{D} the data, @var{R} a coarser grouping of
+## Fit one channel (private), or several with shared lobes (@code{D.nch} >
+## 1, from fit_stack): @var{D} the data, @var{R} a coarser grouping of
 ## the same data for screening starts (both from fit_data, in the same
 ## scaled units; @code{D.s} the scale, @code{D.same} and @code{D.P} the
 ## plain metric, for the trace: see fit_objective), @var{G} the acceptance set (fit_guard).  With a start
@@ -20,16 +21,17 @@
 function ch = fit_channel (D, R, nlobes, opt, G, p0 = [])
   t0 = tic ();
   ch = struct ("p", [], "ps", {cell(1, nlobes)}, "ktime", nan (1, nlobes), "iter", 0, "full_iter", 0, "cvg", true,
-               "rejected", 0, "trace", zeros (0, 3));
+               "rejected", 0, "trace", zeros (0, 2 + D.nch));
   if (! isempty (p0))
     [ch.p, ch.iter, ch.cvg, ch.trace] = fit_lm (D, p0, opt, t0);
     ch.full_iter = ch.iter;
     ch.ps{nlobes} = ch.p;
     return;
   endif
-  ## 0 lobes: rho_d by weighted least squares
-  p = max (pi * sum (D.wl .^ 2 .* D.yl) / max (sum (D.wl .^ 2), realmin), 0);
-  f0 = lafortune_core (p, D.x(:,1), D.x(:,2));
+  ## 0 lobes: rho_d by weighted least squares (per channel)
+  wl2 = reshape (D.wl .^ 2, [], D.nch);
+  p = max (pi * sum (wl2 .* reshape (D.yl, [], D.nch), 1) ./ max (sum (wl2, 1), realmin), 0).';
+  f0 = fit_eval (D, p);
   [obj, e0] = fit_objective (D, f0);
   ch.trace = [toc(t0), obj, e0];
   for k = 1:nlobes
@@ -57,7 +59,7 @@ endfunction
 function run = add_lobe (D, R, p, obj, opt, G, t0)
   WARMUP_COST = 2e5;
   WARMUP_TOL = 1e-4;
-  run = struct ("p", [p; 0; 0; 1], "obj", obj, "trace", zeros (0, 3), "iter", 0,
+  run = struct ("p", [p; 0; 0; 1; zeros(D.nch - 1, 1)], "obj", obj, "trace", zeros (0, 2 + D.nch), "iter", 0,
                 "full_iter", 0, "rejected", 0, "cvg", true);
   ## a warm-up run on R pays only when R is much smaller than D and an
   ## iteration on D costs much more than leasqr's fixed cost per iteration
@@ -65,8 +67,8 @@ function run = add_lobe (D, R, p, obj, opt, G, t0)
   ## in-plane table, 6561 groups, from 2 lobes on); it stops at a looser
   ## tolerance, as it only brings the start closer.  Without one, the best
   ## start is refined on R (fit_starts)
-  np = numel (p) + 3;
-  coarse = 4 * rows (R.x) < rows (D.x) && rows (D.x) * np ^ 2 > WARMUP_COST;
+  np = numel (p) + 2 + D.nch;
+  coarse = 4 * rows (R.x) < rows (D.x) && rows (D.ty) * np ^ 2 > WARMUP_COST;
   starts = fit_starts (R, p, ! coarse);
   if (isempty (starts) || ! (obj > 0))
     return;
@@ -87,7 +89,7 @@ function run = add_lobe (D, R, p, obj, opt, G, t0)
     for i = 1:ntry
       [starts(:,i), it, done(i)] = fit_lm (R, starts(:,i), screen);
       run.iter += it;
-      sobj(i) = fit_objective (R, lafortune_core (starts(:,i), R.x(:,1), R.x(:,2)));
+      sobj(i) = fit_objective (R, fit_eval (R, starts(:,i)));
     endfor
     [~, so] = sort (sobj);
     starts(:,1:ntry) = starts(:,so);
@@ -102,14 +104,27 @@ function run = add_lobe (D, R, p, obj, opt, G, t0)
     [pj, it, cv, T] = fit_lm (D, ps, opt, t0);
     run.iter += it;
     run.full_iter += it;
-    if (! fit_guard (pj, G, D.ymax))
+    if (! accepted (D, pj, G))
       run.rejected += 1;
       continue;
     endif
-    oj = fit_objective (D, lafortune_core (pj, D.x(:,1), D.x(:,2)));
+    oj = fit_objective (D, fit_eval (D, pj));
     if (oj < run.obj)
       run.p = pj; run.obj = oj; run.cvg = cv; run.trace = T;
     endif
     break;
+  endfor
+endfunction
+
+## The guard (fit_guard) on every channel of the parameters P of D
+function ok = accepted (D, p, G)
+  if (D.nch == 1)
+    ok = fit_guard (p, G, D.ymax);
+    return;
+  endif
+  P = shared_lobes ("split", p, D.ref, D.nch);
+  ok = true;
+  for c = 1:D.nch
+    ok = ok && fit_guard (P{c}, G, D.ymax(c));
   endfor
 endfunction

@@ -21,7 +21,8 @@
 ## transform), and for the linear amplitudes of the candidate starts the
 ## first-order weights w t'(y)^2 and their weighted mean data (@code{wl} =
 ## sqrt of their group sums, @code{yl}; for an identity transform, where ty
-## is y, they are @code{w} and @code{ty}).  @code{ymax} is the largest |y|.
+## is y, they are @code{w} and @code{ty}).  @code{ymax} is the largest |y|;
+## @code{nch} = 1 channel (fit_stack makes several channels one problem).
 ## @end deftypefn
 function D = fit_data (spec, c, j, xc, y)
   w = spec.w(:,c);
@@ -47,4 +48,6 @@ function D = fit_data (spec, c, j, xc, y)
     D.yl = accumarray (j, wl2 .* y) ./ max (Wl, realmin);
   endif
   D.ymax = max (abs (y));
+  D.nch = 1;
+  D.ref = 1;
 endfunction

@@ -4,8 +4,9 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{p}, @var{iter}, @var{cvg}, @var{T}] =} fit_lm (@var{D}, @var{p0}, @var{opt}, @var{t0})
 ## One Levenberg-Marquardt run of leasqr on one channel's data @var{D}
-## (from fit_data; private), from parameters @var{p0}, with the analytic
-## Jacobian (or leasqr's dfdp), bounds rho_d >= 0 and 0 <= e <= 1e7 when
+## (from fit_data, or several channels' from fit_stack; private), from
+## parameters @var{p0}, with the analytic Jacobian (or leasqr's dfdp),
+## bounds rho_d >= 0 and 0 <= e <= 1e7 (and shared lobes' amplitudes >= 0) when
 ## @code{opt.bounds}, @code{opt.tol} and @code{opt.max_iter}.  When leasqr's
 ## handling of the bounds fails (its complementary pivoting can raise "not
 ## successful" on a degenerate step), the run is made without bounds and its
@@ -21,7 +22,8 @@
 ##
 ## With @var{t0} (a @code{tic} value), every evaluation of the model is noted
 ## as a row [seconds since @var{t0}, objective, rmse] of @var{T}: the
-## objective of @var{D} and the plain rmse in the data's units (both from
+## objective of @var{D} and the plain rmse in the data's units, one per
+## channel (both from
 ## fit_objective); the caller decides whether the run counts.
 ## @end deftypefn
 function [p, iter, cvg, T] = fit_lm (D, p0, opt, t0 = [])
@@ -32,9 +34,13 @@ function [p, iter, cvg, T] = fit_lm (D, p0, opt, t0 = [])
   endif
   rec = fit_recorder (t0, ftol);
   F = @(xx, pp) model_fun (D, pp, rec);
-  lb = -Inf (np, 1); ub = Inf (np, 1);
-  lb(1) = 0;
-  lb(4:3:end) = 0; ub(4:3:end) = 1e7;
+  if (D.nch == 1)
+    lb = -Inf (np, 1); ub = Inf (np, 1);
+    lb(1) = 0;
+    lb(4:3:end) = 0; ub(4:3:end) = 1e7;
+  else
+    [lb, ub] = shared_lobes ("bounds", np, D.nch);
+  endif
   p0 = min (max (p0, lb), ub);
   options = struct ();
   if (opt.bounds)
@@ -111,7 +117,7 @@ endfunction
 ## The model's values at P, transformed by the metric, for leasqr; the
 ## trace notes the objective and rmse (the transform is done once)
 function ft = model_fun (D, p, rec)
-  f = lafortune_core (p, D.x(:,1), D.x(:,2));
+  f = fit_eval (D, p);
   ft = f;
   if (! D.identity)
     ft = D.t (f, D.c);
@@ -129,7 +135,7 @@ endfunction
 ## by run_leasqr, and P is the run's result).  A run with leasqr's own test
 ## only (REC's tolerance 0, a warm-up) skips the test
 function J = model_jac (D, p, f, rec)
-  [fm, J] = lafortune_core (p, D.x(:,1), D.x(:,2));
+  [fm, J] = fit_eval (D, p);
   if (! D.identity)
     J .*= D.dt (fm, D.c);
   endif

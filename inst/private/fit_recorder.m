@@ -8,7 +8,8 @@
 ## hands this handle to both, as fminsearch's OutputFcn gets the caller's
 ## own store; the run returns what it noted as outputs.
 ##
-## @code{rec.add (obj, rmse)} notes a row [elapsed_s, obj, rmse] of
+## @code{rec.add (obj, rmse)} notes a row [elapsed_s, obj, rmse] (rmse one
+## value per channel) of
 ## @code{rec.T} (the trace; @var{t0} is a @code{tic} value, elapsed times
 ## are measured from it).
 ##
@@ -37,7 +38,7 @@ classdef fit_recorder < handle
   properties
     t0 = [];
     tol = 0;
-    T = zeros (0, 3);
+    T = [];
     p = [];
     iter = [];
     ss = [];

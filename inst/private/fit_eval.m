@@ -1,0 +1,23 @@
+## Copyright (C) 2026 The lafortune developers
+## SPDX-License-Identifier: GPL-3.0-or-later
+
+## -*- texinfo -*-
+## @deftypefn {} {[@var{f}, @var{J}] =} fit_eval (@var{D}, @var{p})
+## The model's values (and Jacobian) at the groups of the fit's data @var{D}
+## (private): one channel's Lafortune parameters (lafortune_core), or, when
+## @code{D.nch} > 1 (fit_stack), lobes shared across the channels
+## (shared_lobes, reference channel @code{D.ref}), channel after channel.
+## @end deftypefn
+function [f, J] = fit_eval (D, p)
+  if (D.nch == 1)
+    if (nargout > 1)
+      [f, J] = lafortune_core (p, D.x(:,1), D.x(:,2));
+    else
+      f = lafortune_core (p, D.x(:,1), D.x(:,2));
+    endif
+  elseif (nargout > 1)
+    [f, J] = shared_lobes ("eval", p, D.ref, D.nch, D.x(:,1), D.x(:,2));
+  else
+    f = shared_lobes ("eval", p, D.ref, D.nch, D.x(:,1), D.x(:,2));
+  endif
+endfunction
