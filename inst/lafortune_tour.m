@@ -9,7 +9,8 @@
 ## A walk through the toolbox for class, in well under a minute: read
 ## measured data, take the paper's in-plane table, fit 1, 2 and 3 lobes,
 ## plot data and fits, render a sphere with the data and with each fit, and
-## compare the renders by PSNR.
+## compare the renders by PSNR and as a viewer sees them (FLIP, CIEDE2000,
+## hue: @code{img_compare}).
 ##
 ## Each step prints the command it runs, so that it can be typed again, and
 ## what came out.  @var{material} is @qcode{"green-metallic-paint"}
@@ -30,7 +31,8 @@
 ##
 ## @var{r} holds what the tour made: @code{brdf}, @code{S}, @code{models},
 ## @code{info}, @code{scene}, @code{images} (measured render first),
-## @code{psnr} (dB, one per fit), @code{figures} (handles) and
+## @code{psnr} (dB, one per fit), @code{flip}, @code{deltae}, @code{hue}
+## (one per fit), @code{figures} (handles) and
 ## @code{files}.
 ##
 ## @example
@@ -97,12 +99,20 @@ function r = lafortune_tour (material = "green-metallic-paint", varargin)
     images{k+1} = rt_render (scene, models{k}, "progress", false);
   endfor
 
-  step (6, "compare the renders: PSNR against the measured data's render");
-  show ("psnr = img_psnr (ref, img)");
-  psnr = cellfun (@(x) img_psnr (images{1}, x), images(2:end));
-  printf ("  PSNR: %s dB for 1, 2, 3 lobes\n", strtrim (sprintf ("%.2f ", psnr)));
-  show ("plot_renders ({ref, img1, img2, img3}, {\"measured\", \"1 lobe\", \"2 lobes\", \"3 lobes\"}, psnr);");
-  figs(3) = plot_renders (images, {"measured", "1 lobe", "2 lobes", "3 lobes"}, psnr,
+  step (6, "compare the renders with the measured data's: PSNR, and as a viewer sees them");
+  show ("q = img_compare (ref, img)    # PSNR, FLIP, CIEDE2000 and hue difference");
+  q = cellfun (@(x) img_compare (images{1}, x), images(2:end));
+  psnr = [q.psnr];
+  flip = [q.flip];
+  deltae = [q.deltae];
+  hue = [q.hue];
+  printf ("  PSNR: %s dB for 1, 2, 3 lobes (higher is better)\n", strtrim (sprintf ("%.2f ", psnr)));
+  printf ("  FLIP: %s   (0 = no visible difference, 1 = the most)\n", strtrim (sprintf ("%.3f ", flip)));
+  printf ("  dE:   %s   (CIEDE2000, mean over the sphere: about 1 is just noticeable)\n",
+          strtrim (sprintf ("%.2f ", deltae)));
+  printf ("  hue:  %s   (degrees: how far the colours have turned)\n", strtrim (sprintf ("%.1f ", hue)));
+  show ("plot_renders ({ref, img1, img2, img3}, {\"measured\", \"1 lobe\", \"2 lobes\", \"3 lobes\"}, psnr, \"map\", \"flip\");");
+  figs(3) = plot_renders (images, {"measured", "1 lobe", "2 lobes", "3 lobes"}, psnr, "map", "flip",
                           "title", sprintf ("%s: sphere, rt_render", brdf.name),
                           "file", out ("tour-renders.png"));
   if (! isempty (opt.folder))
@@ -113,7 +123,8 @@ function r = lafortune_tour (material = "green-metallic-paint", varargin)
   printf ("\nlafortune_tour: done in %.1f s\n", toc (t0));
   if (nargout > 0)
     r = struct ("brdf", brdf, "S", S, "models", {models}, "info", info, "scene", scene,
-                "images", {images}, "psnr", psnr, "figures", figs, "files", {files});
+                "images", {images}, "psnr", psnr, "flip", flip, "deltae", deltae, "hue", hue,
+                "figures", figs, "files", {files});
   endif
 endfunction
 
@@ -140,6 +151,9 @@ endfunction
 %!   assert (size (r.psnr), [1 3]);
 %!   assert (all (isfinite (r.psnr) & r.psnr > 10));
 %!   assert (r.psnr(3) > r.psnr(1));         # 3 lobes render closer than 1
+%!   assert (all (r.flip > 0 & r.flip < 1));
+%!   assert (all (r.deltae >= 0 & isfinite (r.deltae)));
+%!   assert (all (r.hue >= 0 & r.hue <= 180));
 %!   assert (numel (r.files), 3);
 %!   for k = 1:3
 %!     s = dir (r.files{k});

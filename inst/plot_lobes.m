@@ -22,6 +22,8 @@
 ## indices of methods drawn with thick lines (a recommended method).
 ## @item "panels"
 ## titles of the panels (cellstr).
+## @item "ylabel"
+## the y axis's label (default: PSNR); for another measure, such as FLIP.
 ## @item "title"
 ## a heading for the figure.
 ## @item "file"
@@ -43,6 +45,7 @@ function [hf, hax] = plot_lobes (psnr, names, varargin)
     print_usage ();
   endif
   opt = parse_opts (varargin, fname, struct ("paper", [], "highlight", [], "panels", {{}},
+                                             "ylabel", "PSNR against the measured render (dB)",
                                              "title", "", "file", ""));
   if (! iscell (psnr))
     psnr = {psnr};
@@ -77,6 +80,9 @@ function [hf, hax] = plot_lobes (psnr, names, varargin)
   elseif (! (iscellstr (panels) && numel (panels) == n))
     error ("lafortune:badOption", "%s: PANELS must be a cell of %d strings", fname, n);
   endif
+  if (! ischar (opt.ylabel))
+    error ("lafortune:badOption", "%s: YLABEL must be a string", fname);
+  endif
   if (! ischar (opt.title))
     error ("lafortune:badOption", "%s: TITLE must be a string", fname);
   endif
@@ -110,7 +116,7 @@ function [hf, hax] = plot_lobes (psnr, names, varargin)
     grid (ha, "on");
     xlabel (ha, "lobes");
     if (i == 1)
-      ylabel (ha, "PSNR against the measured render (dB)");
+      ylabel (ha, opt.ylabel);
     endif
     if (! isempty (panels{i}))
       title (ha, panels{i}, "interpreter", "none");

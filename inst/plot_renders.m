@@ -48,6 +48,11 @@
 ## @item "width"
 ## the width of each image in pixels (default: 180 for tall images, 240
 ## for others).
+## @item "map"
+## what the inset shows: @qcode{"diff"} (default), the difference above;
+## @qcode{"flip"}, the per-pixel HDR-FLIP error of @code{img_flip} (black 0,
+## white 1: what a viewer sees as different), with the fit's FLIP (its mean
+## over the object's pixels) in the caption under its PSNR.
 ## @item "file"
 ## a PNG file to write the figure to (atomically).
 ## @end table
@@ -72,7 +77,7 @@ function [hf, hax] = plot_renders (imgs, labels, psnr, varargin)
   endif
   opt = parse_opts (varargin, fname, struct ("paper", [], "rows", {{}}, "title", "",
                                              "diff_scale", 0.1, "inset", 1/3, "corner", "southeast",
-                                             "width", [], "file", ""));
+                                             "width", [], "file", "", "map", "diff"));
   if (! iscell (imgs) || isempty (imgs) || ndims (imgs) > 2)
     error ("lafortune:badImage", "%s: IMGS must be a 1 x C or R x C cell of images", fname);
   endif
@@ -116,6 +121,10 @@ function [hf, hax] = plot_renders (imgs, labels, psnr, varargin)
   if (! ischar (opt.title))
     error ("lafortune:badOption", "%s: TITLE must be a string", fname);
   endif
+  if (! (ischar (opt.map) && any (strcmp (opt.map, {"diff", "flip"}))))
+    error ("lafortune:badOption", "%s: MAP must be \"diff\" or \"flip\"", fname);
+  endif
+  flip = strcmp (opt.map, "flip");
   corners = {"southeast", "southwest", "northeast", "northwest"};
   if (! (ischar (opt.corner) && any (strcmp (opt.corner, corners))))
     error ("lafortune:badOption", "%s: CORNER must be one of %s", fname, strjoin (corners, ", "));
@@ -136,7 +145,8 @@ function [hf, hax] = plot_renders (imgs, labels, psnr, varargin)
   L = 20 + 25 * ! isempty (rnames);   # room for the row names
   G = 14;                             # between panels
   capt = 30;                          # the label above an image
-  capb = 30 + 18 * ! isempty (paper); # the PSNR below it (two lines with the paper's)
+  ## the PSNR below it (a line more for the paper's, and for FLIP)
+  capb = 30 + 18 * ! isempty (paper) + 18 * flip;
   T = 10 + 28 * ! isempty (opt.title);
   Bar = 90;                           # the difference scale at the bottom
   W = L + C * pw + (C - 1) * G + 20;
@@ -146,6 +156,7 @@ function [hf, hax] = plot_renders (imgs, labels, psnr, varargin)
   cmap = hot (256);
   y = H - T;
   for r = 1:R
+    fe = nan (1, C);
     y -= capt + ph(r);
     ref = double (imgs{r,1});
     [rgb1, stops] = img_tonemap (ref, "auto");
@@ -159,7 +170,11 @@ function [hf, hax] = plot_renders (imgs, labels, psnr, varargin)
         rgb = double (rgb1) / 255;
       else
         rgb = double (img_tonemap (x, stops)) / 255;
-        d = mean (abs (x - ref), 3) / (ds * peak);
+        if (flip)
+          [fe(c), d] = img_flip (ref, x);
+        else
+          d = mean (abs (x - ref), 3) / (ds * peak);
+        endif
         rgb = add_inset (rgb, d, fi, cmap, opt.corner);
       endif
       ha = plot_place (hf, [L + (c - 1) * (pw + G), y, pw, ph(r)]);
@@ -174,8 +189,13 @@ function [hf, hax] = plot_renders (imgs, labels, psnr, varargin)
       elseif (! isnan (psnr(r,c-1)))
         plot_label (hf, cx, y - 4, sprintf ("PSNR %.2f dB", psnr(r,c-1)));
       endif
+      yl = y - 22;
       if (! isempty (paper) && c > 1 && ! isnan (paper(r,c-1)))
-        plot_label (hf, cx, y - 22, sprintf ("(paper %.2f dB)", paper(r,c-1)));
+        plot_label (hf, cx, yl, sprintf ("(paper %.2f dB)", paper(r,c-1)));
+        yl -= 18;
+      endif
+      if (flip && c > 1)
+        plot_label (hf, cx, yl, sprintf ("FLIP %.3f", fe(c)));
       endif
       if (c == 1 && ! isempty (rnames))
         ylabel (ha, rnames{r}, "interpreter", "none", "fontweight", "bold");
@@ -184,9 +204,14 @@ function [hf, hax] = plot_renders (imgs, labels, psnr, varargin)
     y -= capb;
   endfor
   w = min (W - 40, 420);
-  plot_cbar (hf, [(W - w) / 2, 64, w, 12], cmap, [0 ds], "", [0 ds/2 ds],
-             {"0", sprintf("%g", ds/2), sprintf(">= %g", ds)});
-  plot_label (hf, W / 2, 26, "insets: |fit - reference|, mean of R, G, B, as a fraction of the reference's peak");
+  if (flip)
+    plot_cbar (hf, [(W - w) / 2, 64, w, 12], cmap, [0 1], "", [0 0.5 1], {"0", "0.5", "1"});
+    plot_label (hf, W / 2, 26, "insets: HDR-FLIP error per pixel (0: no visible difference, 1: the largest)");
+  else
+    plot_cbar (hf, [(W - w) / 2, 64, w, 12], cmap, [0 ds], "", [0 ds/2 ds],
+               {"0", sprintf("%g", ds/2), sprintf(">= %g", ds)});
+    plot_label (hf, W / 2, 26, "insets: |fit - reference|, mean of R, G, B, as a fraction of the reference's peak");
+  endif
   if (! isempty (opt.title))
     plot_heading (hf, opt.title);
   endif
@@ -289,6 +314,21 @@ endfunction
 %! assert (squeeze (c(end-35, end-5, :))', [0 0 0]);
 %! assert (any (squeeze (c(end-36, end-5, :)) != 0));       # the image
 
+%!test
+%! ## the FLIP inset and caption
+%! r0 = zeros (40, 30, 3); r0(10:30,8:22,:) = 0.5;
+%! img = r0; img(10:30,8:22,1) = 0.8;
+%! hf = plot_renders ({r0, img}, {"m", "redder"}, 20, "map", "flip");
+%! unwind_protect
+%!   t = findall (hf, "type", "text");
+%!   s = get (t, "string");
+%!   assert (any (strncmp (s, "FLIP 0.", 7)));
+%!   assert (any (! cellfun (@isempty, strfind (s, "HDR-FLIP"))));
+%! unwind_protect_cleanup
+%!   close (hf);
+%! end_unwind_protect
+
+%!error <MAP must be> plot_renders ({ones(4,4,3), ones(4,4,3)}, {"a", "b"}, 1, "map", "delta")
 %!error <Invalid call> plot_renders ({ref})
 %!error id=lafortune:badImage plot_renders (ref, {"a"}, [])
 %!error <a row's images must have one size> plot_renders ({ref, ref(1:10,:,:)}, {"a", "b"}, 1)

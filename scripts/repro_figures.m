@@ -12,15 +12,16 @@
 ## @item renders-MATERIAL.png (plot_renders; Fig. 4 and 5): the measured
 ## render and the POV-Ray renders of the fits, one row per method of
 ## METHODS (in-plane: the paper's method, with the paper's PSNR; hemisphere;
-## scene: the recommended fit), with difference insets and PSNR;
+## scene: the recommended fit), with FLIP-map insets, PSNR and FLIP;
 ## @item polar-MATERIAL.png (plot_polar): data and the 3-lobe in-plane fit
 ## in the plane of incidence at theta_i = 15, 30, 45, 60 degrees (log radius:
 ## the grazing lobes would hide the others);
 ## @item slice-MATERIAL.png (plot_slice): the theta_h-theta_d image at
 ## phi_d = 90 degrees of the data and the in-plane fits;
 ## @item fit-trace.png (plot_trace): in-plane fit error against run time;
-## @item study-MATERIAL.png: the study (STUDY): PSNR against lobes, one panel
-## per table, one line per weighting (plot_lobes);
+## @item study-MATERIAL.png, study-flip-MATERIAL.png: the study (STUDY): PSNR
+## and FLIP against lobes, one panel per table, one line per weighting
+## (plot_lobes);
 ## @item spp.png: render PSNR against run time, one panel per material (drawn
 ## here: a small plot).
 ## @end itemize
@@ -73,7 +74,7 @@ function repro_figures ()
     paper(strcmp (mths, "inplane"),:) = repro_paper (c, mat);
     rowname = struct ("inplane", "in-plane fits", "hemisphere", "hemisphere fits",
                       "scene", "scene fits (recommended)");
-    done (plot_renders (imgs, [{"measured"}, lobe_names], psnr, "paper", paper,
+    done (plot_renders (imgs, [{"measured"}, lobe_names], psnr, "paper", paper, "map", "flip",
                         "rows", cellfun (@(m) rowname.(m), mths, "uniformoutput", false),
                         "width", min (256, max (180, columns (ref))),   # the paper's 256: 1:1
                         "title", sprintf ("%s: POV-Ray, %d x %d, anti-aliasing %d x %d",
@@ -93,13 +94,15 @@ function repro_figures ()
   spp_figure (c, fullfile (fd, "spp.png"));
   if (c.study)
     for i = 1:numel (c.materials)
-      study_figure (c, c.materials{i}, fullfile (fd, ["study-" c.materials{i} ".png"]));
+      study_figure (c, c.materials{i}, fullfile (fd, ["study-" c.materials{i} ".png"]), "psnr_a");
+      study_figure (c, c.materials{i}, fullfile (fd, ["study-flip-" c.materials{i} ".png"]), "flip_a");
     endfor
   endif
 endfunction
 
-## the study: PSNR against lobes, one panel per table, one line per weighting
-function study_figure (c, mat, file)
+## the study: PSNR (Q "psnr_a") or FLIP ("flip_a") against lobes, one panel
+## per table, one line per weighting
+function study_figure (c, mat, file, q)
   R = jsondecode (fileread (fullfile (c.results, "study", [mat ".json"])));
   M = R.methods;
   tables = unique ({M.table}, "stable");
@@ -108,18 +111,24 @@ function study_figure (c, mat, file)
   for t = 1:numel (tables)
     P{t} = nan (numel (weights), max (c.lobes));
     for m = M(strcmp ({M.table}, tables{t}))'
-      P{t}(strcmp (weights, m.weight),:) = m.psnr_a(:)';
+      P{t}(strcmp (weights, m.weight),:) = m.(q)(:)';
     endfor
   endfor
   paper = repro_paper (c, mat);
-  if (all (isnan (paper)))
+  if (all (isnan (paper)) || ! strcmp (q, "psnr_a"))
     paper = [];                     # no dashed line and no key for it
   endif
   names = strrep (strrep (tables, "inplane", "in-plane table"), "hemisphere", "hemisphere table");
   names = strrep (names, "scene", "scene table");
+  what = "PSNR";
+  ylab = "PSNR against the measured render (dB)";
+  if (strcmp (q, "flip_a"))
+    what = "FLIP (lower is better)";
+    ylab = "HDR-FLIP against the measured render";
+  endif
   done (plot_lobes (P, weights, "paper", repmat ({paper}, 1, numel (tables)),
-                    "highlight", find (strcmp (weights, "image")), "panels", names,
-                    "title", sprintf ("%s: PSNR of each fit's POV-Ray render, by table and weighting", mat),
+                    "highlight", find (strcmp (weights, "image")), "panels", names, "ylabel", ylab,
+                    "title", sprintf ("%s: %s of each fit's POV-Ray render, by table and weighting", mat, what),
                     "file", file));
 endfunction
 

@@ -14,12 +14,14 @@
 ## against the measured data rendered by the same renderer with the same
 ## samples (RESULTS/render/MATERIAL-measured-pov.exr for POV-Ray,
 ## MATERIAL-measured.exr for rt_render; peak = that image's maximum), so
-## that sampling noise cancels and the PSNR measures the model.
+## that sampling noise cancels and the PSNR measures the model; beside it
+## HDR-FLIP, the mean CIEDE2000 and the hue statistic (img_compare).
 ## Writes RESULTS/render/MATERIAL-METHOD-K.exr and .png.
 ##
 ## @var{R}: @code{antialias} and per method a struct array (one per lobe
 ## count) with @code{lobes}, @code{psnr_pov}, @code{psnr_rt},
-## @code{renderers_psnr}, @code{pov_time}, @code{pov_scene_bytes},
+## @code{flip_pov}, @code{flip_rt}, @code{deltae_pov}, @code{deltae_rt},
+## @code{hue_pov}, @code{hue_rt}, @code{renderers_psnr}, @code{pov_time}, @code{pov_scene_bytes},
 ## @code{rt_time}.
 ## @end deftypefn
 function R = repro_render_fits (material)
@@ -42,12 +44,17 @@ function R = repro_render_fits (material)
       ## the same model through the Octave raytracer, with the measured
       ## render's samples
       [img_rt, rinfo] = rt_render (scene, m, "progress", false);
-      r = struct ("lobes", k, "psnr_pov", img_psnr (refpov, img), "psnr_rt", img_psnr (ref, img_rt),
+      qp = img_compare (refpov, img);
+      qr = img_compare (ref, img_rt);
+      r = struct ("lobes", k, "psnr_pov", qp.psnr, "psnr_rt", qr.psnr,
+                  "flip_pov", qp.flip, "flip_rt", qr.flip, "deltae_pov", qp.deltae,
+                  "deltae_rt", qr.deltae, "hue_pov", qp.hue, "hue_rt", qr.hue,
                   "renderers_psnr", img_psnr (img_rt, img), "pov_time", pinfo.time,
                   "pov_scene_bytes", pinfo.bytes, "rt_time", rinfo.time_total);
       R.(mth)(find (c.lobes == k)) = r;
-      printf ("reproduce: [%s] %s %d lobe(s): PSNR %.2f dB (POV-Ray, %.1f s), %.2f dB (rt_render, %.1f s)\n",
-              material, mth, k, r.psnr_pov, r.pov_time, r.psnr_rt, r.rt_time);
+      printf ("reproduce: [%s] %s %d lobe(s): PSNR %.2f dB, FLIP %.4f, dE %.2f (POV-Ray, %.1f s); %.2f dB, FLIP %.4f, dE %.2f (rt_render, %.1f s)\n",
+              material, mth, k, r.psnr_pov, r.flip_pov, r.deltae_pov, r.pov_time,
+              r.psnr_rt, r.flip_rt, r.deltae_rt, r.rt_time);
     endfor
   endfor
 endfunction

@@ -90,8 +90,12 @@ function repro_report ()
     s.renderers_psnr_measured = M.renderers_psnr;
     s.fit_rel_rmse_inplane = mean (F.inplane.errors.inplane.rel_rmse, 2)';
     for m = c.methods
-      s.(["psnr_" m{1} "_pov"]) = [R.(m{1}).psnr_pov];
-      s.(["psnr_" m{1} "_rt"]) = [R.(m{1}).psnr_rt];
+      for q = {"psnr", "flip", "deltae", "hue"}
+        for r = {"pov", "rt"}
+          f = [q{1} "_" r{1}];
+          s.([q{1} "_" m{1} "_" r{1}]) = [R.(m{1}).(f)];
+        endfor
+      endfor
       s.(["fit_rmse_" m{1}]) = mean (F.(m{1}).errors.(m{1}).rmse, 2)';
       s.(["fit_time_" m{1}]) = max (F.(m{1}).lobe_time, [], 2)';
     endfor
@@ -115,8 +119,9 @@ function repro_report ()
                         strrep (c.materials{i}, "-", " "), c.materials{i});
   endfor
   L{end+1} = "";
-  L{end+1} = "Each fit's render has its difference image (|fit - measured| averaged over channels, white = 10% of the peak) in the corner.";
+  L{end+1} = "Each fit's render has its HDR-FLIP error map (per pixel; black: no visible difference, white: the largest) in the corner, and its FLIP under its PSNR.";
   L{end+1} = "";
+  L = perceptual_section (c, L, D, mlabel);
   ## --- the study
   if (c.study)
     L = study_section (c, L);
@@ -258,6 +263,36 @@ function s = scene_desc (c)
   endif
 endfunction
 
+## the fits judged as a viewer sees them: FLIP, CIEDE2000 and the hue
+## statistic of every render (img_compare, in the render step's records)
+function L = perceptual_section (c, L, D, mlabel)
+  L{end+1} = "## The fits as a viewer sees them: FLIP and colour difference";
+  L{end+1} = "";
+  L{end+1} = ["PSNR is relative to the measured render's peak, the specular highlight, often a thousand times the rest of the picture, " ...
+              "so it hardly sees the body colour: a grey sphere for a teal paint can score above the paper. " ...
+              "Here every render is also compared as a viewer sees it (`img_compare`): **FLIP** (HDR-FLIP, Andersson et al. 2020/2021: " ...
+              "the mean per-pixel perceived difference over the object, 0 = same, 1 = most different; exposures by the published rule " ...
+              "on the measured render's object pixels), **ΔE** (the mean CIEDE2000 difference of the displayed images over the object; " ...
+              "about 1 is just noticeable, above 10 a different colour) and **hue** (the chroma-weighted mean hue-angle difference in degrees: " ...
+              "a body or highlight of the wrong colour). Lower is better for all three. POV-Ray / rt_render."];
+  L{end+1} = "";
+  L{end+1} = "| material | method | lobes | PSNR (dB) | FLIP | ΔE | hue (deg) |";
+  L{end+1} = "|---|---|---|---|---|---|---|";
+  for i = 1:numel (c.materials)
+    mat = c.materials{i};
+    R = D.(fieldname (mat)).R;
+    for m = c.methods
+      for j = 1:numel (c.lobes)
+        r = R.(m{1})(j);
+        L{end+1} = sprintf ("| %s | %s | %d | %.2f / %.2f | %.4f / %.4f | %.2f / %.2f | %.1f / %.1f |",
+                            mat, mlabel.(m{1}), c.lobes(j), r.psnr_pov, r.psnr_rt, r.flip_pov, r.flip_rt,
+                            r.deltae_pov, r.deltae_rt, r.hue_pov, r.hue_rt);
+      endfor
+    endfor
+  endfor
+  L{end+1} = "";
+endfunction
+
 ## the study of tables and weightings against the picture
 function L = study_section (c, L)
   L{end+1} = "## Which fit looks right: tables and weightings against the picture";
@@ -266,7 +301,7 @@ function L = study_section (c, L)
               "scene: the angle pairs the scene's pixels see, `merl_scene`) with each weighting of the residuals " ...
               "(plain, cosine: times cos theta_i as Ngan et al. 2005, relative, log; image: each pair's share of the image times its irradiance squared, " ...
               "the image's MSE). PSNR of each fit's POV-Ray render against the measured data's POV-Ray render, in the scene " ...
-              "(A) and in a second scene lit from another direction (B); `pred.` is the PSNR the scene table predicts for A " ...
+              "(A) and in a second scene lit from another direction (B), and the FLIP of A (lower is better); `pred.` is the PSNR the scene table predicts for A " ...
               "(`lafortune_error (model, S, \"psnr\")`). The paper's method is the first row."];
   L{end+1} = "";
   for i = 1:numel (c.materials)
@@ -277,14 +312,20 @@ function L = study_section (c, L)
     for k = 1:nl
       hdr = [hdr sprintf(" A, %d | B, %d |", k, k)];
     endfor
+    for k = 1:nl
+      hdr = [hdr sprintf(" FLIP A, %d |", k)];
+    endfor
     L{end+1} = sprintf ("**%s** (second scene lit from [%s]):", mat, num2str (R.light_b(:)', "%.2f "));
     L{end+1} = "";
     L{end+1} = [hdr " pred. A | fit (s) |"];
-    L{end+1} = ["|---|---|" repmat("---|---|", 1, nl) "---|---|"];
+    L{end+1} = ["|---|---|" repmat("---|---|", 1, nl) repmat("---|", 1, nl) "---|---|"];
     for m = R.methods(:)'
       row = sprintf ("| %s | %s |", m.table, m.weight);
       for k = 1:nl
         row = [row sprintf(" %.2f | %.2f |", m.psnr_a(k), m.psnr_b(k))];
+      endfor
+      for k = 1:nl
+        row = [row sprintf(" %.4f |", m.flip_a(k))];
       endfor
       pr = "-";
       if (all (isfinite (m.psnr_a_predicted)))
@@ -294,6 +335,7 @@ function L = study_section (c, L)
     endfor
     L{end+1} = "";
     L{end+1} = sprintf ("![PSNR against lobes, %s](figures/study-%s.png)", mat, mat);
+    L{end+1} = sprintf ("![FLIP against lobes, %s](figures/study-flip-%s.png)", mat, mat);
     L{end+1} = "";
   endfor
 endfunction

@@ -14,7 +14,7 @@
 ## (@code{lafortune_fit}'s "psnr": each pair's share of the image times its
 ## irradiance squared, the image's MSE, so the fit maximises the render's
 ## PSNR).  Each fit is rendered with POV-Ray in the scene and in a second
-## scene lit from STUDY_LIGHT, and compared (PSNR) with the measured data
+## scene lit from STUDY_LIGHT, and compared (PSNR and FLIP) with the measured data
 ## rendered there by POV-Ray with the same samples.  A model met before
 ## (another column, or the main fit step's) is rendered once, and a column
 ## that is a fit of the main step (same table, same weighting: the paper's
@@ -23,7 +23,8 @@
 ##
 ## @var{R}: @code{light_b} and @code{methods}, a struct array with
 ## @code{table}, @code{weight}, @code{psnr_a}, @code{psnr_b} (1 x LOBES:
-## the scene, the second scene), @code{psnr_a_predicted} (from the scene
+## the scene, the second scene), @code{flip_a}, @code{flip_b} (HDR-FLIP,
+## img_compare), @code{psnr_a_predicted} (from the scene
 ## table, @code{lafortune_error} "psnr"), @code{fit_time} and @code{rmse}
 ## (mean RGB, on the method's own table).
 ## @end deftypefn
@@ -60,7 +61,7 @@ function R = repro_study (material)
   ## the main step's models by method
   nl = max (c.lobes);
   seen = {};
-  done = zeros (0, 2);
+  done = zeros (0, 4);                # [PSNR A, PSNR B, FLIP A, FLIP B] per model
   main = struct ();
   F = jsondecode (fileread (fullfile (rd, [material "-fits.json"])));
   Ff = jsondecode (fileread (fullfile (c.results, "fit", [material ".json"])));
@@ -69,13 +70,13 @@ function R = repro_study (material)
       f = fullfile (c.results, "fit", sprintf ("%s-%s-%d.json", material, m{1}, c.lobes(k)));
       if (isfield (F, m{1}) && exist (f, "file"))
         seen{end+1} = lafortune_import (f);
-        done(end+1,:) = [F.(m{1})(k).psnr_pov, NaN];
+        done(end+1,:) = [F.(m{1})(k).psnr_pov, NaN, F.(m{1})(k).flip_pov, NaN];
         main.(m{1}){c.lobes(k)} = seen{end};
       endif
     endfor
   endfor
 
-  M = struct ("table", {}, "weight", {}, "psnr_a", {}, "psnr_b", {},
+  M = struct ("table", {}, "weight", {}, "psnr_a", {}, "psnr_b", {}, "flip_a", {}, "flip_b", {},
               "psnr_a_predicted", {}, "fit_time", {}, "rmse", {});
   for i = 1:rows (cols)
     [tn, wn] = cols{i,:};
@@ -102,6 +103,7 @@ function R = repro_study (material)
       rmse = mean (info.history, 2)';
     endif
     r = struct ("table", tn, "weight", wn, "psnr_a", nan (1, nl), "psnr_b", nan (1, nl),
+                "flip_a", nan (1, nl), "flip_b", nan (1, nl),
                 "psnr_a_predicted", nan (1, nl), "fit_time", fit_time, "rmse", rmse);
     for k = 1:nl
       m = models{k};
@@ -112,21 +114,24 @@ function R = repro_study (material)
         j = numel (seen);
       endif
       if (isnan (done(j,1)))
-        done(j,1) = img_psnr (ref_a, pov_render (sa, m, "antialias", c.pov_aa,
-                                                 "threads", c.pov_threads));
+        q = img_compare (ref_a, pov_render (sa, m, "antialias", c.pov_aa, "threads", c.pov_threads));
+        done(j,[1 3]) = [q.psnr, q.flip];
       endif
       if (isnan (done(j,2)))
-        done(j,2) = img_psnr (ref_b, pov_render (sb, m, "antialias", c.pov_aa,
-                                                 "threads", c.pov_threads));
+        q = img_compare (ref_b, pov_render (sb, m, "antialias", c.pov_aa, "threads", c.pov_threads));
+        done(j,[2 4]) = [q.psnr, q.flip];
       endif
       r.psnr_a(k) = done(j,1);
       r.psnr_b(k) = done(j,2);
+      r.flip_a(k) = done(j,3);
+      r.flip_b(k) = done(j,4);
       if (isfield (T, "scene"))
         r.psnr_a_predicted(k) = lafortune_error (m, T.scene, "psnr");
       endif
     endfor
-    printf ("reproduce: [%s] study: %s/%s PSNR %s dB (scene), %s dB (second scene)\n", material,
-            tn, wn, mat2str (r.psnr_a, 4), mat2str (r.psnr_b, 4));
+    printf ("reproduce: [%s] study: %s/%s PSNR %s dB, FLIP %s (scene); %s dB, FLIP %s (second scene)\n",
+            material, tn, wn, mat2str (r.psnr_a, 4), mat2str (r.flip_a, 3), mat2str (r.psnr_b, 4),
+            mat2str (r.flip_b, 3));
     M(end+1) = r;
   endfor
   R = struct ("material", material, "light_b", sb.light.direction, "methods", M);
