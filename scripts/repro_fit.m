@@ -9,12 +9,14 @@
 ## @code{inplane}, the paper's way (plane of incidence, grazing angles left
 ## out), @code{hemisphere}, the whole valid hemisphere (subsampled to
 ## HEMI_SAMPLES, weighted by solid angle), and @code{scene}, the recommended
-## fit for the best picture: the angle pairs the scene's pixels see with
-## image weights (@code{lafortune_fit}'s "psnr"), see repro_table; export every model to RESULTS/fit/
-## MATERIAL-METHOD-K.json, .txt and .brdf (BRDF Explorer).
+## fit for the best picture: the angle pairs the scene's pixels see, with
+## @code{lafortune_fit}'s defaults for a scene table; a method may name its
+## colour mode (@code{scene_shared}, see repro_table); export every model
+## to RESULTS/fit/ MATERIAL-METHOD-K.json, .txt and .brdf (BRDF Explorer).
 ##
 ## @var{R}: @code{lobes}, and per method (@code{R.inplane},
-## @code{R.hemisphere}): @code{samples}, @code{time}, @code{iterations},
+## @code{R.hemisphere}): @code{samples}, @code{weight} and @code{color} (the
+## fit's), @code{time}, @code{iterations},
 ## @code{converged}, @code{lobe_time} (K x 3), @code{errors.TABLE.rmse},
 ## @code{rel_rmse}, @code{log_rmse}, @code{cos_rmse} (K x 3, of each model
 ## on each method's table; cos_rmse is weighted by cos theta_i as in Ngan et
@@ -27,7 +29,7 @@ function R = repro_fit (material)
   warning ("off", "lafortune:notConverged");
   b = merl_read (fullfile (c.data_dir, [material ".binary"]));
   for method = c.methods
-    [S.(method{1}), W.(method{1})] = repro_table (b, method{1}, c, c.hemi_samples);   # (an unknown name is an error there)
+    [S.(method{1}), O.(method{1})] = repro_table (b, method{1}, c, c.hemi_samples);   # (an unknown name is an error there)
   endfor
   outdir = fullfile (c.results, "fit");
   if (! isfolder (outdir))
@@ -39,8 +41,8 @@ function R = repro_fit (material)
     printf ("reproduce: [%s] fitting 1..%d lobes, %s (%d samples)\n", material,
             max (c.lobes), mth, rows (S.(mth).wi));
     fflush (stdout);
-    [~, info, models] = lafortune_fit (S.(mth), max (c.lobes), "weight", W.(mth));
-    r = struct ("samples", rows (S.(mth).wi), "time", info.time,
+    [~, info, models] = lafortune_fit (S.(mth), max (c.lobes), O.(mth){:});
+    r = struct ("samples", rows (S.(mth).wi), "weight", info.weight, "color", info.color, "time", info.time,
                 "iterations", info.iterations, "converged", info.converged,
                 "lobe_time", info.lobe_time);
     for k = c.lobes

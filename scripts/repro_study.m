@@ -43,9 +43,8 @@ function R = repro_study (material)
 
   ## the tables
   T = struct ();
-  Wfit = struct ();
   for t = c.study_tables
-    [T.(t{1}), Wfit.(t{1})] = repro_table (b, t{1}, c);
+    T.(t{1}) = repro_table (b, t{1}, c);
   endfor
   cols = {};
   for t = c.study_tables
@@ -87,7 +86,8 @@ function R = repro_study (material)
     endif
     ## the main step's fit of this table with this weighting (the same table:
     ## its hemisphere is subsampled to HEMI_SAMPLES) is not made again
-    same = (isfield (main, tn) && strcmp (w, Wfit.(tn)) && isequal (c.lobes, 1:nl)
+    same = (isfield (main, tn) && strcmp (w, Ff.(tn).weight) && strcmp (Ff.(tn).color, "separate")
+            && isequal (c.lobes, 1:nl)
             && (! strcmp (tn, "hemisphere") || isinf (c.hemi_samples)));
     printf ("reproduce: [%s] study: %s table, %s weights, 1..%d lobes%s\n", material, tn, wn, nl,
             merge (same, " (the fit step's fits)", ""));
@@ -98,7 +98,7 @@ function R = repro_study (material)
       rmse = mean (Ff.(tn).errors.(tn).rmse, 2)';
     else
       t0 = tic ();
-      [~, info, models] = lafortune_fit (S, nl, "weight", w);
+      [~, info, models] = lafortune_fit (S, nl, "weight", w, "color", "separate");
       fit_time = toc (t0);
       rmse = mean (info.history, 2)';
     endif

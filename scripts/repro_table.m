@@ -2,22 +2,33 @@
 ## SPDX-License-Identifier: GPL-3.0-or-later
 
 ## -*- texinfo -*-
-## @deftypefn {} {[@var{S}, @var{weight}] =} repro_table (@var{b}, @var{name}, @var{c}, @var{max_samples})
-## The sample table @var{name} of the BRDF @var{b} for `make reproduce` and
-## `make database` (configuration @var{c} from repro_config):
+## @deftypefn {} {[@var{S}, @var{opts}] =} repro_table (@var{b}, @var{name}, @var{c}, @var{max_samples})
+## The sample table of the fit method @var{name} of the BRDF @var{b} for
+## `make reproduce` and `make database` (configuration @var{c} from
+## repro_config), and the options of its fit.  @var{name} is a table,
+## optionally with the colour mode of its fit after an underscore
+## (@code{scene_shared}, @code{inplane_shared}, @code{scene_separate}):
 ## @code{inplane}, the paper's plane of incidence; @code{hemisphere}, every
 ## valid bin with its solid-angle weight (at most @var{max_samples}, Inf
 ## for all); @code{scene}, the angle pairs the scene's pixels see
 ## (@code{merl_scene} of repro_scene's scene at STUDY_TABLE_SPP samples per
 ## pixel, with the whole hemisphere as a weak prior).  Grazing angles
-## beyond MAX_ANGLE are left out of the first two.  @var{weight}: the
-## weighting of the fit step's method of that name (@code{lafortune_fit}'s
-## "weight"): "psnr", the image's error, for the scene table (the
-## recommended fit), else "plain" (the paper's).
+## beyond MAX_ANGLE are left out of the first two.  @var{opts}: the
+## options of the method's fit for @code{lafortune_fit}, @code{@{@}} (its
+## defaults for the table: for a scene table the recommended fit, else the
+## paper's) or the colour mode.
 ## @end deftypefn
-function [S, weight] = repro_table (b, name, c, max_samples = Inf)
-  weight = "plain";
-  switch (name)
+function [S, opts] = repro_table (b, name, c, max_samples = Inf)
+  opts = {};
+  parts = strsplit (name, "_");
+  if (numel (parts) == 2 && any (strcmp (parts{2}, {"shared", "separate"})))
+    opts = {"color", parts{2}};
+  elseif (numel (parts) != 1)
+    error ("lafortune:badConfig",
+           "repro_table: unknown method '%s': expected a table (inplane, hemisphere, scene), optionally with _shared or _separate",
+           name);
+  endif
+  switch (parts{1})
     case "inplane"
       S = merl_plane (b, "max_angle", c.max_angle);
     case "hemisphere"
@@ -26,9 +37,8 @@ function [S, weight] = repro_table (b, name, c, max_samples = Inf)
       ts = repro_scene (c);
       ts.spp = c.study_table_spp;
       S = merl_scene (b, ts);
-      weight = "psnr";
     otherwise
       error ("lafortune:badConfig",
-             "repro_table: unknown table '%s': expected inplane, hemisphere or scene", name);
+             "repro_table: unknown table '%s': expected inplane, hemisphere or scene", parts{1});
   endswitch
 endfunction
