@@ -197,7 +197,7 @@ endef
 $(foreach m,$(DB_MATS),$(eval $(call db_material,$(m))))
 
 DB_OUT := $(DB)/table.csv $(DB)/report.md $(DB)/summary.json $(DB)/gallery/index.html \
-  $(DB)/figures/psnr-lobes.png
+  $(DB)/figures/psnr-lobes.png $(DB)/figures/flip-lobes.png
 
 .PHONY: database db-list
 database: deps

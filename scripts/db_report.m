@@ -9,15 +9,23 @@
 ##
 ## @table @file
 ## @item table.csv
-## one row per material, fit method and lobe count: PSNR, errors (rmse,
-## log rmse and cosine-weighted rmse as Ngan et al. 2005, means over R, G,
-## B, on each method's table), fit time, render times and the model's
-## parameters; a material whose file could not be read or processed gets one
-## row with status @code{error} and the message.
+## one row per material, fit method and lobe count: PSNR, FLIP, ΔE
+## (CIEDE2000) and the hue statistic of the fit's render with POV-Ray
+## (@code{_pov}) and with rt_render (@code{_rt}) against the measured data
+## rendered by the same renderer (img_compare), errors (rmse, log rmse and
+## cosine-weighted rmse as Ngan et al. 2005, means over R, G, B, on each
+## method's table), fit time, render times and the model's parameters; a
+## material whose file could not be read or processed gets one row with
+## status @code{error} and the message.
 ## @item report.md
-## the summary across materials (median, worst and best PSNR per method and
-## lobe count, the materials where the Lafortune model fails, times per
-## stage) and the plot @file{figures/psnr-lobes.png}.
+## the summary across materials (median PSNR, FLIP, ΔE and hue, worst and
+## best PSNR and worst FLIP per method and lobe count), the pairs of fits
+## that PSNR and FLIP rank differently, the materials where the recommended
+## fit's FLIP rises with one more lobe (FAIL_FLIP_DROP), the materials where
+## the Lafortune model fails (judged by FLIP: FAIL_FLIP, FAIL_FLIP_GAIN;
+## PSNR beside it), every material's numbers, times per stage, and the
+## plots @file{figures/psnr-lobes.png} and @file{figures/flip-lobes.png}
+## (PSNR and FLIP against the lobe count).
 ## @item gallery/index.html
 ## the contact sheets of all materials.
 ## @item summary.json
@@ -55,18 +63,27 @@ function db_report ()
   ok = find ([D.ok]);
   nm = numel (c.methods);
   nk = numel (c.lobes);
-  ## PSNR (materials x lobes) per method: P with POV-Ray, Q with rt_render
-  P = Q = struct ();
-  for m = c.methods
-    P.(m{1}) = Q.(m{1}) = nan (numel (mats), nk);
-    for i = ok
-      P.(m{1})(i,:) = [D(i).rec.render_fits.(m{1}).psnr_pov];
-      Q.(m{1})(i,:) = [D(i).rec.render_fits.(m{1}).psnr_rt];
+  ## every measure (materials x lobes) per method and renderer: X.flip.pov.scene,
+  ## X.deltae.rt.inplane, ...; P and Q are PSNR with POV-Ray and rt_render
+  X = struct ();
+  for q = {"psnr", "flip", "deltae", "hue"}
+    for r = {"pov", "rt"}
+      for m = c.methods
+        X.(q{1}).(r{1}).(m{1}) = nan (numel (mats), nk);
+        for i = ok
+          X.(q{1}).(r{1}).(m{1})(i,:) = field_of (D(i).rec.render_fits.(m{1}), [q{1} "_" r{1}], nk);
+        endfor
+      endfor
     endfor
   endfor
+  P = X.psnr.pov;
+  Q = X.psnr.rt;
+  F = X.flip.pov;
+  Frt = X.flip.rt;
 
   ## --- table.csv
-  head = {"material", "method", "lobes", "status", "error", "psnr_db", "psnr_rt_db"};
+  head = {"material", "method", "lobes", "status", "error", "psnr_db", "psnr_rt_db", "flip_pov", "flip_rt", ...
+          "deltae_pov", "deltae_rt", "hue_pov", "hue_rt"};
   for t = c.methods
     head = [head, strcat({"rmse_", "log_rmse_", "cos_rmse_"}, t{1})];
   endfor
@@ -85,13 +102,16 @@ function db_report ()
       rows{end+1} = csv_row ([{mats{i}, "", "", "error", D(i).error}, repmat({""}, 1, numel (head) - 5)]);
       continue;
     endif
-    F = D(i).rec.fit;
+    Fi = D(i).rec.fit;
     R = D(i).rec.render_fits;
     for m = c.methods
-      r = F.(m{1});
+      r = Fi.(m{1});
       for j = 1:nk
         k = c.lobes(j);
-        v = {mats{i}, m{1}, k, "ok", "", R.(m{1})(j).psnr_pov, R.(m{1})(j).psnr_rt};
+        v = {mats{i}, m{1}, k, "ok", ""};
+        for q = {"psnr", "flip", "deltae", "hue"}
+          v = [v, {X.(q{1}).pov.(m{1})(i,j), X.(q{1}).rt.(m{1})(i,j)}];
+        endfor
         for t = c.methods
           e = r.errors.(t{1});
           v = [v, {mean(e.rmse(k,:)), mean(e.log_rmse(k,:)), mean(e.cos_rmse(k,:))}];
@@ -119,9 +139,11 @@ function db_report ()
   endfor
   repro_save (fullfile (c.results, "table.csv"), [strjoin(rows, "\n") "\n"]);
 
-  ## --- the plot: PSNR against lobe count, every material
-  fig = fullfile (c.results, "figures", "psnr-lobes.png");
-  plot_psnr (P, c, mats, label, fig);
+  ## --- the plots: PSNR and FLIP against lobe count, every material
+  plot_lobes_db (P, c, mats, label, "PSNR against the measured render (dB)", [],
+                 [], fullfile (c.results, "figures", "psnr-lobes.png"));
+  plot_lobes_db (F, c, mats, label, "FLIP against the measured render (lower is better)", [0 1],
+                 c.fail_flip, fullfile (c.results, "figures", "flip-lobes.png"));
 
   ## --- report.md
   L = {"# lafortune: the Lafortune model over a database of measured BRDFs", ""};
@@ -133,7 +155,15 @@ function db_report ()
                       scene.name, scene.width, scene.height, scene.spp, c.pov_aa, mat2str (c.lobes),
                       c.max_angle, datestr (now (), "yyyy-mm-dd HH:MM"), OCTAVE_VERSION);
   L{end+1} = "";
-  L{end+1} = "PSNR: 10 log10 (peak^2 / MSE) of each fit's render against the measured-data render, peak = the measured render's maximum. Everything per row is in `table.csv`; the contact sheets are in `gallery/index.html`.";
+  L{end+1} = ["Each fit's render is compared with the measured-data render (`img_compare`): " ...
+              "PSNR, 10 log10 (peak^2 / MSE), peak = the measured render's maximum (dominated by the " ...
+              "specular highlight; higher is better); FLIP, HDR-FLIP (Andersson et al. 2021), the mean " ...
+              "per-pixel error over the object's pixels, 0 (same) to 1, as a viewer flipping between the " ...
+              "two pictures sees them (lower is better); ΔE, the mean CIEDE2000 difference of the " ...
+              "displayed pictures over the object's pixels (about 1: just noticeable; lower is better); " ...
+              "hue, the chroma-weighted mean hue-angle difference in degrees (a body or highlight of the " ...
+              "wrong colour; lower is better). Everything per row is in `table.csv`; the contact sheets " ...
+              "are in `gallery/index.html`."];
   L{end+1} = "";
   L{end+1} = "## Summary across materials";
   L{end+1} = "";
@@ -146,60 +176,151 @@ function db_report ()
   if (isempty (ag))
     ag = NaN;
   endif
-  L{end+1} = sprintf (["PSNR with POV-Ray (the fits' renderer, as the paper used one) and, in the column rt_render, " ...
-                       "with the Octave raytracer, which evaluates each model per sample (each against the measured " ...
-                       "data rendered by the same renderer). The two renderers agree on the same model to %.1f dB " ...
-                       "at worst, %.1f dB in the median over the %d fits."], min (ag), median (ag), numel (ag));
+  L{end+1} = sprintf (["Measures of the POV-Ray renders (the fits' renderer, as the paper used one) and, in the " ...
+                       "column rt_render, of the Octave raytracer's, which evaluates each model per sample (each " ...
+                       "against the measured data rendered by the same renderer). The two renderers agree on the " ...
+                       "same model to %.1f dB at worst, %.1f dB in the median over the %d fits."],
+                      min (ag), median (ag), numel (ag));
   L{end+1} = "";
-  L{end+1} = "| method | lobes | median PSNR (dB) | worst PSNR (dB) | worst material | best PSNR (dB) | median PSNR, rt_render (dB) | median cosine-weighted rmse |";
-  L{end+1} = "|---|---|---|---|---|---|---|---|";
+  L{end+1} = ["| method | lobes | median PSNR (dB) | median FLIP | median ΔE | median hue (°) | " ...
+              "worst PSNR (dB) | worst material | best PSNR (dB) | worst FLIP | worst material (FLIP) | " ...
+              "rt_render: median PSNR (dB), FLIP, ΔE, hue (°) | median cosine-weighted rmse |"];
+  L{end+1} = "|---|---|---|---|---|---|---|---|---|---|---|---|---|";
   sm = struct ("materials", {mats}, "processed", numel (ok), "failed", {{}}, "methods", struct ());
   for m = c.methods
     for j = 1:nk
       x = P.(m{1})(ok,j);
+      med = @(q, r) median (X.(q).(r).(m{1})(ok,j));
       cr = arrayfun (@(i) mean (D(i).rec.fit.(m{1}).errors.(m{1}).cos_rmse(c.lobes(j),:)), ok);
       if (isempty (x))
-        L{end+1} = sprintf ("| %s | %d | - | - | - | - | - | - |", label_of (label, m{1}), c.lobes(j));
+        L{end+1} = sprintf ("| %s | %d |%s", label_of (label, m{1}), c.lobes(j), repmat (" - |", 1, 11));
         continue;
       endif
       [w, iw] = min (x);
-      L{end+1} = sprintf ("| %s | %d | %.2f | %.2f | %s | %.2f | %.2f | %.4g |", label_of (label, m{1}), c.lobes(j),
-                          median (x), w, mats{ok(iw)}, max (x), median (Q.(m{1})(ok,j)), median (cr));
-      sm.methods.(m{1}).median_psnr(j) = median (x);
-      sm.methods.(m{1}).median_psnr_rt(j) = median (Q.(m{1})(ok,j));
+      [wf, iwf] = max (F.(m{1})(ok,j));
+      L{end+1} = sprintf (["| %s | %d | %.2f | %.3f | %.2f | %.1f | %.2f | %s | %.2f | %.3f | %s | " ...
+                           "%.2f, %.3f, %.2f, %.1f | %.4g |"], label_of (label, m{1}), c.lobes(j),
+                          median (x), med ("flip", "pov"), med ("deltae", "pov"), med ("hue", "pov"),
+                          w, mats{ok(iw)}, max (x), wf, mats{ok(iwf)},
+                          med ("psnr", "rt"), med ("flip", "rt"), med ("deltae", "rt"), med ("hue", "rt"),
+                          median (cr));
+      for q = {"psnr", "flip", "deltae", "hue"}
+        sm.methods.(m{1}).(["median_" q{1}])(j) = med (q{1}, "pov");
+        sm.methods.(m{1}).(["median_" q{1} "_rt"])(j) = med (q{1}, "rt");
+      endfor
       sm.methods.(m{1}).worst_psnr(j) = w;
       sm.methods.(m{1}).worst_material{j} = mats{ok(iw)};
+      sm.methods.(m{1}).worst_flip(j) = wf;
+      sm.methods.(m{1}).worst_flip_material{j} = mats{ok(iwf)};
     endfor
   endfor
   L{end+1} = "";
   L{end+1} = "![PSNR against lobe count, every material](figures/psnr-lobes.png)";
   L{end+1} = "";
+  L{end+1} = sprintf ("![FLIP against lobe count, every material (dashed: FAIL_FLIP = %g)](figures/flip-lobes.png)",
+                      c.fail_flip);
+  L{end+1} = "";
+
+  ## --- where PSNR and FLIP disagree
+  L{end+1} = "## PSNR and FLIP";
+  L{end+1} = "";
+  [L, sm.rank_disagreement] = disagreement (L, P, F, Q, Frt, ok, mats, c, c.fail_flip_drop);
+  rec = "scene";                      # the recommended method
+  if (any (strcmp (c.methods, rec)))
+    [up, rise] = falls_of (F.(rec), ok, c.fail_flip_drop);
+    [up_rt, rise_rt] = falls_of (Frt.(rec), ok, c.fail_flip_drop);
+    L{end+1} = sprintf (["The recommended fit (%s) renders worse by FLIP with one more lobe (FLIP up by more " ...
+                         "than %g, FAIL_FLIP_DROP) on: %s with POV-Ray; %s with rt_render."], rec, c.fail_flip_drop,
+                        names_rise (mats, up, F.(rec), P.(rec), c.lobes, c.fail_flip_drop),
+                        names_rise (mats, up_rt, Frt.(rec), Q.(rec), c.lobes, c.fail_flip_drop));
+    sm.flip_rises = struct ("method", rec, "pov", {mats(up)}, "rt", {mats(up_rt)});
+  else
+    L{end+1} = sprintf ("The recommended fit (%s) is not among METHODS (%s).", rec, strjoin (c.methods, " "));
+    sm.flip_rises = struct ("method", rec, "pov", {{}}, "rt", {{}});
+  endif
+  L{end+1} = "";
+
+  ## --- where the Lafortune model fails: by FLIP, PSNR beside it
   L{end+1} = "## Where the Lafortune model fails";
   L{end+1} = "";
-  L{end+1} = sprintf (["A material fails when its best render is below %g dB, or when going from %d to %d " ...
-                       "lobes gains less than %g dB (the paper found this for red plastic). A method falls on a " ...
-                       "material when one more lobe renders worse by more than %g dB (as the paper's 3-lobe fits did)."],
-                      c.fail_psnr, min (c.lobes), max (c.lobes), c.fail_gain, c.fail_drop);
+  L{end+1} = sprintf (["A material fails when its best fit (the lowest FLIP of its POV-Ray renders, over the " ...
+                       "methods and lobe counts) has FLIP above %g (FAIL_FLIP: the picture looks wrong), or when " ...
+                       "the method of that best fit looks wrong with %d lobe%s (FLIP above %g) and going to %d " ...
+                       "lobes lowers its FLIP by less than %g (FAIL_FLIP_GAIN: more lobes do not help, as the " ...
+                       "paper found by PSNR for red plastic; a material that %d lobe%s already render%s right " ...
+                       "does not fail for that). A method falls on a material when one more lobe raises FLIP by " ...
+                       "more than %g (FAIL_FLIP_DROP; as the paper's 3-lobe fits did by PSNR)."],
+                      c.fail_flip, min (c.lobes), plural (min (c.lobes)), c.fail_flip, max (c.lobes),
+                      c.fail_flip_gain, min (c.lobes), plural (min (c.lobes)),
+                      ifelse (min (c.lobes) == 1, "s", ""), c.fail_flip_drop);
+  L{end+1} = "";
+  fails = {};
+  for i = ok
+    fb = cellfun (@(m) min (F.(m)(i,:)), c.methods);
+    [best, b] = min (fb);
+    if (! isfinite (best))
+      continue;
+    endif
+    mb = c.methods{b};
+    [~, jb] = min (F.(mb)(i,:));
+    gain = F.(mb)(i,1) - F.(mb)(i,end);
+    why = {};
+    if (best > c.fail_flip)
+      why{end+1} = sprintf ("FLIP above %g", c.fail_flip);
+    endif
+    if (nk > 1 && F.(mb)(i,1) > c.fail_flip && ! (gain >= c.fail_flip_gain))
+      why{end+1} = sprintf ("more lobes do not help (FLIP down by less than %g)", c.fail_flip_gain);
+    endif
+    if (isempty (why))
+      continue;
+    endif
+    fails{end+1} = struct ("material", mats{i}, "reason", strjoin (why, "; "), "method", mb,
+                           "lobes", c.lobes(jb), "flip", best, "flip_rt", Frt.(mb)(i,jb),
+                           "psnr", P.(mb)(i,jb), "best_psnr", max (cellfun (@(m) max (P.(m)(i,:)), c.methods)),
+                           "flip_first", F.(mb)(i,1), "flip_last", F.(mb)(i,end),
+                           "psnr_first", P.(mb)(i,1), "psnr_last", P.(mb)(i,end));
+  endfor
+  if (isempty (fails))
+    L{end+1} = sprintf ("No material fails (%d processed).", numel (ok));
+  else
+    L{end+1} = sprintf ("%d of the %d processed materials fail:", numel (fails), numel (ok));
+    L{end+1} = "";
+    L{end+1} = sprintf (["| material | why | best fit | its FLIP, POV-Ray (rt_render) | its PSNR (dB) | " ...
+                         "FLIP, %d to %d lobes | PSNR, %d to %d lobes (dB) | best PSNR, any fit (dB) |"],
+                        min (c.lobes), max (c.lobes), min (c.lobes), max (c.lobes));
+    L{end+1} = "|---|---|---|---|---|---|---|---|";
+    for f = fails
+      x = f{1};
+      L{end+1} = sprintf ("| %s | %s | %s, %d lobe%s | %.3f (%.3f) | %.2f | %.3f → %.3f | %.2f → %.2f | %.2f |",
+                          x.material, x.reason, x.method, x.lobes, plural (x.lobes), x.flip, x.flip_rt,
+                          x.psnr, x.flip_first, x.flip_last, x.psnr_first, x.psnr_last, x.best_psnr);
+    endfor
+  endif
+  sm.fails = fails;
+  L{end+1} = "";
+  L{end+1} = "Per method:";
   L{end+1} = "";
   for m = c.methods
-    best = max (P.(m{1})(ok,:), [], 2);
-    gain = P.(m{1})(ok,end) - P.(m{1})(ok,1);
-    low = ok(best < c.fail_psnr);
-    flat = ok(gain < c.fail_gain & nk > 1);
-    [falls, drop] = falls_of (P.(m{1}), ok, c.fail_drop);
-    [falls_rt, drop_rt] = falls_of (Q.(m{1}), ok, c.fail_drop);
-    L{end+1} = sprintf (["- %s: below %g dB: %s; more lobes do not help: %s; more lobes render worse: " ...
-                         "%s (POV-Ray), %s (rt_render)."],
-                        label_of (label, m{1}), c.fail_psnr, names_psnr (mats, low, max (P.(m{1})(low,:), [], 2)),
-                        names_psnr (mats, flat, P.(m{1})(flat,end) - P.(m{1})(flat,1), " dB gain"),
-                        names_psnr (mats, falls, -drop(drop > c.fail_drop), " dB"),
-                        names_psnr (mats, falls_rt, -drop_rt(drop_rt > c.fail_drop), " dB"));
-    sm.methods.(m{1}).fails_low = mats(low);
+    best = min (F.(m{1})(ok,:), [], 2);
+    gain = F.(m{1})(ok,1) - F.(m{1})(ok,end);
+    high = ok(best > c.fail_flip);
+    flat = ok(! (gain >= c.fail_flip_gain) & nk > 1);
+    [falls, rise] = falls_of (F.(m{1}), ok, c.fail_flip_drop);
+    [falls_rt, rise_rt] = falls_of (Frt.(m{1}), ok, c.fail_flip_drop);
+    L{end+1} = sprintf (["- %s: best FLIP above %g: %s; more lobes do not help (FLIP down by less than %g): " ...
+                         "%s; more lobes render worse: %s (POV-Ray), %s (rt_render)."],
+                        label_of (label, m{1}), c.fail_flip,
+                        names_val (mats, high, min (F.(m{1})(high,:), [], 2), "FLIP %.3f"), c.fail_flip_gain,
+                        names_val (mats, flat, F.(m{1})(flat,end) - F.(m{1})(flat,1),
+                                   sprintf ("FLIP %%+.3f from %d to %d lobes", min (c.lobes), max (c.lobes))),
+                        names_rise (mats, falls, F.(m{1}), P.(m{1}), c.lobes, c.fail_flip_drop),
+                        names_rise (mats, falls_rt, Frt.(m{1}), Q.(m{1}), c.lobes, c.fail_flip_drop));
+    sm.methods.(m{1}).fails_high = mats(high);
     sm.methods.(m{1}).fails_flat = mats(flat);
     sm.methods.(m{1}).falls = mats(falls);
-    sm.methods.(m{1}).largest_drop = max ([drop; 0]);
+    sm.methods.(m{1}).largest_flip_rise = max ([rise; 0]);
     sm.methods.(m{1}).falls_rt = mats(falls_rt);
-    sm.methods.(m{1}).largest_drop_rt = max ([drop_rt; 0]);
+    sm.methods.(m{1}).largest_flip_rise_rt = max ([rise_rt; 0]);
   endfor
   bad = find (! [D.ok]);
   L{end+1} = "";
@@ -216,24 +337,28 @@ function db_report ()
   L{end+1} = "";
   L{end+1} = "## Every material";
   L{end+1} = "";
-  hdr = "| material |";
-  sep = "|---|";
-  for m = c.methods
-    hdr = [hdr sprintf(" %s PSNR, POV-Ray (rt_render), %s lobes (dB) |", m{1}, strjoin (arrayfun (@num2str, c.lobes, "uniformoutput", false), "/"))];
-    sep = [sep "---|"];
-  endfor
-  L{end+1} = [hdr " contact sheet |"];
-  L{end+1} = [sep "---|"];
+  L{end+1} = sprintf (["One row per material and method; each cell gives the %s-lobe fits in turn, " ...
+                       "POV-Ray renders, then rt_render's."],
+                      strjoin (arrayfun (@num2str, c.lobes, "uniformoutput", false), ", "));
+  L{end+1} = "";
+  L{end+1} = ["| material | method | PSNR (dB) | FLIP | ΔE | hue (°) | rt_render PSNR (dB) | rt_render FLIP | " ...
+              "rt_render ΔE | rt_render hue (°) | contact sheet |"];
+  L{end+1} = "|---|---|---|---|---|---|---|---|---|---|---|";
+  fmt = struct ("psnr", "%.2f", "flip", "%.3f", "deltae", "%.2f", "hue", "%.1f");
   for i = 1:numel (mats)
     if (! D(i).ok)
-      L{end+1} = sprintf ("| %s | %s |", mats{i}, strjoin (repmat ({"failed"}, 1, nm + 1), " | "));
+      L{end+1} = sprintf ("| %s | %s |", mats{i}, strjoin (repmat ({"failed"}, 1, 10), " | "));
       continue;
     endif
-    s = sprintf ("| %s |", mats{i});
     for m = c.methods
-      s = [s " " lobes_txt(P.(m{1})(i,:)) " (rt_render " lobes_txt(Q.(m{1})(i,:)) ") |"];
+      s = sprintf ("| %s | %s |", mats{i}, m{1});
+      for r = {"pov", "rt"}
+        for q = {"psnr", "flip", "deltae", "hue"}
+          s = [s " " lobes_txt(X.(q{1}).(r{1}).(m{1})(i,:), fmt.(q{1})) " |"];
+        endfor
+      endfor
+      L{end+1} = [s sprintf(" [sheet](materials/%s/%s) |", mats{i}, D(i).rec.sheet.file)];
     endfor
-    L{end+1} = [s sprintf(" [sheet](materials/%s/%s) |", mats{i}, D(i).rec.sheet.file)];
   endfor
   L{end+1} = "";
   L{end+1} = "## Time per material by stage";
@@ -254,28 +379,157 @@ function db_report ()
   repro_save (fullfile (c.results, "report.md"), strjoin (L, "\n"));
   sm.psnr = P;
   sm.psnr_rt = Q;
+  sm.flip = F;
+  sm.flip_rt = Frt;
+  sm.deltae = X.deltae.pov;
+  sm.deltae_rt = X.deltae.rt;
+  sm.hue = X.hue.pov;
+  sm.hue_rt = X.hue.rt;
   sm.settings = struct ("scene", scene.name, "width", scene.width, "height", scene.height,
                         "spp", scene.spp, "pov_antialias", c.pov_aa, "max_angle", c.max_angle,
-                        "lobes", c.lobes, "methods", {c.methods}, "quick", c.quick);
+                        "lobes", c.lobes, "methods", {c.methods}, "quick", c.quick,
+                        "fail_flip", c.fail_flip, "fail_flip_gain", c.fail_flip_gain,
+                        "fail_flip_drop", c.fail_flip_drop);
   repro_save (fullfile (c.results, "summary.json"), sm);
-  write_gallery (c, D, P, label);
+  write_gallery (c, D, P, F, X.deltae.pov, label);
   printf ("database: %d materials (%d failed): %s\n", numel (mats), numel (bad),
           fullfile (c.results, "report.md"));
 endfunction
 
-## The materials (indices into OK) whose PSNR X (materials x lobes) falls
-## by more than LIMIT dB with one more lobe, and every material's largest
-## fall DROP
-function [falls, drop] = falls_of (X, ok, limit)
-  drop = zeros (numel (ok), 1);
-  if (columns (X) > 1)
-    drop = max (-diff (X(ok,:), 1, 2), [], 2);
+## The values of FIELD in the struct array R (one per lobe count) as a
+## 1 x NK row; NaN for what the record lacks or holds as null (NaN, Inf)
+function v = field_of (R, field, nk)
+  v = nan (1, nk);
+  if (! isfield (R, field))
+    return;
   endif
-  falls = ok(drop > limit);
+  for j = 1:min (nk, numel (R))
+    x = R(j).(field);
+    if (isnumeric (x) && isscalar (x))
+      v(j) = x;
+    endif
+  endfor
 endfunction
 
-function s = lobes_txt (v)
-  s = strjoin (arrayfun (@(x) sprintf ("%.2f", x), v, "uniformoutput", false), " / ");
+## How many pairs of fits PSNR and FLIP rank differently (one says the first
+## is better, the other the second), within each material (all its fits) and
+## across materials (the same method and lobe count), and how many of them
+## by more than GAP of FLIP; appends the sentence to L
+function [L, S] = disagreement (L, P, F, Q, Frt, ok, mats, c, gap)
+  S = struct ();
+  ex = "";
+  nk = numel (c.lobes);
+  for r = {"pov", "rt"}
+    if (strcmp (r{1}, "pov"))
+      A = P;  B = F;
+    else
+      A = Q;  B = Frt;
+    endif
+    w = a = zeros (1, 3);          # pairs, ranked differently, ... by more than GAP of FLIP
+    best = [];
+    for i = ok
+      pa = cellfun (@(m) A.(m)(i,:), c.methods, "uniformoutput", false);
+      pb = cellfun (@(m) B.(m)(i,:), c.methods, "uniformoutput", false);
+      [n, e] = discordant ([pa{:}], [pb{:}], gap);
+      w += n;
+      ## the pair ranked differently with the largest FLIP difference (an example)
+      if (strcmp (r{1}, "pov") && ! isempty (e) && (isempty (best) || e(1) > best(1)))
+        best = [e i];
+      endif
+    endfor
+    for m = c.methods
+      for j = 1:nk
+        a += discordant (A.(m{1})(ok,j), B.(m{1})(ok,j), gap);
+      endfor
+    endfor
+    S.(r{1}) = struct ("within_pairs", w(1), "within_differ", w(2), "within_differ_gap", w(3),
+                       "across_pairs", a(1), "across_differ", a(2), "across_differ_gap", a(3));
+    if (! isempty (best))
+      i = best(4);
+      fit = @(q) sprintf ("%s %d", c.methods{ceil (q / nk)}, c.lobes(mod (q - 1, nk) + 1));
+      pv = @(X, q) X.(c.methods{ceil (q / nk)})(i, mod (q - 1, nk) + 1);
+      ex = sprintf ([" The widest such pair: on %s, PSNR prefers %s (%.2f dB, FLIP %.3f) to %s (%.2f dB, " ...
+                     "FLIP %.3f)."], mats{i}, fit (best(2)), pv (P, best(2)), pv (F, best(2)), fit (best(3)),
+                    pv (P, best(3)), pv (F, best(3)));
+    endif
+  endfor
+  pct = @(d, n) 100 * d / max (n, 1);
+  L{end+1} = sprintf (["PSNR and FLIP rank %d of %d pairs of fits of the same material differently (%.0f %%; " ...
+                       "%d with FLIP apart by more than %g), and %d of %d pairs of materials fitted by the same " ...
+                       "method with the same lobe count (%.0f %%; %d by more than %g): POV-Ray renders; with " ...
+                       "rt_render's, %d of %d and %d of %d. A pair is ranked differently when one measure " ...
+                       "finds the first fit better and the other the second (pairs that either finds equal " ...
+                       "agree).%s"],
+                      S.pov.within_differ, S.pov.within_pairs, pct (S.pov.within_differ, S.pov.within_pairs),
+                      S.pov.within_differ_gap, gap, S.pov.across_differ, S.pov.across_pairs,
+                      pct (S.pov.across_differ, S.pov.across_pairs), S.pov.across_differ_gap, gap,
+                      S.rt.within_differ, S.rt.within_pairs, S.rt.across_differ, S.rt.across_pairs, ex);
+  L{end+1} = "";
+endfunction
+
+## N = [pairs, ranked differently, ... with B apart by more than GAP]: pairs
+## of entries where both A (PSNR: higher is better) and B (FLIP: lower is
+## better) are finite, and those where A and B disagree; E = [FLIP gap,
+## first, second] of the pair ranked differently with the largest FLIP gap
+## (the first preferred by PSNR), empty when none
+function [N, e] = discordant (a, b, gap)
+  a = a(:);
+  b = b(:);
+  q = find (isfinite (a) & isfinite (b));
+  [i, j] = find (triu (true (numel (q)), 1));
+  i = q(i);
+  j = q(j);
+  da = a(i) - a(j);
+  db = b(i) - b(j);
+  bad = da .* db > 0;               # higher PSNR and higher FLIP
+  N = [numel(i), nnz(bad), nnz(bad & abs (db) > gap)];
+  e = [];
+  if (N(2) > 0)
+    [g, k] = max (abs (db) .* bad);
+    if (da(k) > 0)
+      e = [g, i(k), j(k)];
+    else
+      e = [g, j(k), i(k)];
+    endif
+  endif
+endfunction
+
+## The materials (indices into OK) whose FLIP X (materials x lobes) rises
+## by more than LIMIT with one more lobe, and every material's largest rise
+function [falls, rise] = falls_of (X, ok, limit)
+  rise = zeros (numel (ok), 1);
+  if (columns (X) > 1)
+    rise = max (diff (X(ok,:), 1, 2), [], 2);
+  endif
+  falls = ok(rise > limit);
+endfunction
+
+## the materials IDX with their FLIP rises by more than LIMIT, each step
+## "K1 → K2 lobes: FLIP +x (PSNR +y dB)"; FLIP F, PSNR P: materials x lobes
+function s = names_rise (mats, idx, F, P, lobes, limit)
+  if (isempty (idx))
+    s = "none";
+    return;
+  endif
+  t = {};
+  for i = idx(:)'
+    d = diff (F(i,:));
+    st = {};
+    for j = find (d > limit)
+      st{end+1} = sprintf ("%d → %d lobes: FLIP %+.3f, PSNR %+.2f dB", lobes(j), lobes(j+1), d(j),
+                           P(i,j+1) - P(i,j));
+    endfor
+    t{end+1} = sprintf ("%s (%s)", mats{i}, strjoin (st, "; "));
+  endfor
+  s = strjoin (t, ", ");
+endfunction
+
+function s = lobes_txt (v, fmt = "%.2f")
+  s = strjoin (arrayfun (@(x) sprintf (fmt, x), v, "uniformoutput", false), " / ");
+endfunction
+
+function s = plural (k)
+  s = ifelse (k == 1, "", "s");
 endfunction
 
 function s = label_of (label, m)
@@ -285,11 +539,12 @@ function s = label_of (label, m)
   endif
 endfunction
 
-function s = names_psnr (mats, idx, v, unit = " dB")
+## the materials IDX with their values V, e.g. "gold (FLIP 0.612)"
+function s = names_val (mats, idx, v, fmt)
   if (isempty (idx))
     s = "none";
   else
-    s = strjoin (arrayfun (@(j) sprintf ("%s (%.2f%s)", mats{idx(j)}, v(j), unit), 1:numel (idx),
+    s = strjoin (arrayfun (@(j) sprintf (["%s (" fmt ")"], mats{idx(j)}, v(j)), 1:numel (idx),
                            "uniformoutput", false), ", ");
   endif
 endfunction
@@ -310,40 +565,52 @@ function s = csv_row (v)
   s = strjoin (v, ",");
 endfunction
 
-function plot_psnr (P, c, mats, label, file)
+## one panel per method: the measure X.(method) (materials x lobes) against
+## the lobe count, one line per material named at its end; YLAB the axis
+## label, YL its limits ([]: from the values), LIMIT a threshold drawn dashed
+## ([]: none); written to FILE
+function plot_lobes_db (X, c, mats, label, ylab, yl, limit, file)
   warning ("off", "Octave:gnuplot-graphics");
   graphics_toolkit ("gnuplot");
   nm = numel (c.methods);
   h = figure ("visible", "off", "position", [0 0 520 * nm 560]);
-  ## the same PSNR axis for every method
-  v = cell2mat (cellfun (@(m) P.(m)(:), c.methods(:), "uniformoutput", false));
-  v = v(isfinite (v));
-  yl = [0 50];
-  if (! isempty (v))
-    yl = [floor(min (v)) - 1, ceil(max (v)) + 1];
+  ## the same axis for every method
+  if (isempty (yl))
+    v = cell2mat (cellfun (@(m) X.(m)(:), c.methods(:), "uniformoutput", false));
+    v = v(isfinite (v));
+    yl = [0 50];
+    if (! isempty (v))
+      yl = [floor(min (v)) - 1, ceil(max (v)) + 1];
+    endif
   endif
   for i = 1:nm
     m = c.methods{i};
     subplot (1, nm, i);
-    X = P.(m);
-    col = lines (rows (X));
+    Y = X.(m);
+    col = lines (rows (Y));
     ## the names at the line ends, spread apart so that none overlaps
-    ok = find (isfinite (X(:,end)))';
-    ly = spread (X(ok,end), (yl(2) - yl(1)) * 11 / 460, yl);
+    ok = find (isfinite (Y(:,end)))';
+    ly = spread (Y(ok,end), (yl(2) - yl(1)) * 11 / 460, yl);
     for q = 1:numel (ok)
       r = ok(q);
-      plot (c.lobes, X(r,:), "-o", "linewidth", 1, "color", col(r,:));
+      plot (c.lobes, Y(r,:), "-o", "linewidth", 1, "color", col(r,:));
       hold on;
-      plot ([c.lobes(end), c.lobes(end) + 0.25], [X(r,end), ly(q)], "-", "color", col(r,:));
+      plot ([c.lobes(end), c.lobes(end) + 0.25], [Y(r,end), ly(q)], "-", "color", col(r,:));
       text (c.lobes(end) + 0.3, ly(q), mats{r}, "fontsize", 7, "interpreter", "none",
             "color", col(r,:) * 0.8);
     endfor
+    if (! isempty (limit))
+      plot ([min(c.lobes) - 0.2, max(c.lobes) + 1.2], [limit limit], "--k", "linewidth", 1);
+      hold on;
+      text (min (c.lobes) - 0.15, limit, sprintf ("FAIL_FLIP %g", limit), "fontsize", 7,
+            "interpreter", "none", "verticalalignment", "bottom");
+    endif
     hold off;
     xlim ([min(c.lobes) - 0.2, max(c.lobes) + 1.2]);
     ylim (yl);
     set (gca, "xtick", c.lobes);
     xlabel ("lobes");
-    ylabel ("PSNR against the measured render (dB)");
+    ylabel (ylab);
     title (label_of (label, m), "interpreter", "none");
     grid on;
   endfor
@@ -368,7 +635,7 @@ function ly = spread (y, gap, yl)
   ly(o) = ys;
 endfunction
 
-function write_gallery (c, D, P, label)
+function write_gallery (c, D, P, F, E, label)
   H = {"<!DOCTYPE html>", "<html><head><meta charset=\"utf-8\"><title>lafortune: contact sheets</title>", ...
        "<style>body{font-family:sans-serif} img{max-width:100%} .err{color:#a00}</style></head><body>", ...
        "<h1>Measured render and Lafortune fits, per material</h1>", "<ul>"};
@@ -377,6 +644,7 @@ function write_gallery (c, D, P, label)
                         ifelse (D(i).ok, "", " (failed)"));
   endfor
   H{end+1} = "</ul>";
+  lobes = strjoin (arrayfun (@num2str, c.lobes, "uniformoutput", false), "/");
   for i = 1:numel (D)
     H{end+1} = sprintf ("<h2 id=\"%s\">%s</h2>", D(i).material, D(i).material);
     if (! D(i).ok)
@@ -384,9 +652,9 @@ function write_gallery (c, D, P, label)
       continue;
     endif
     for m = c.methods
-      H{end+1} = sprintf ("<p>%s: %s dB for %s lobes</p>", label_of (label, m{1}),
-                          strjoin (arrayfun (@(v) sprintf ("%.2f", v), P.(m{1})(i,:), "uniformoutput", false), " / "),
-                          strjoin (arrayfun (@num2str, c.lobes, "uniformoutput", false), "/"));
+      H{end+1} = sprintf ("<p>%s, %s lobes: PSNR %s dB; FLIP %s; &Delta;E %s</p>", label_of (label, m{1}),
+                          lobes, lobes_txt (P.(m{1})(i,:)), lobes_txt (F.(m{1})(i,:), "%.3f"),
+                          lobes_txt (E.(m{1})(i,:)));
     endfor
     H{end+1} = sprintf ("<img src=\"../materials/%s/%s\" alt=\"%s\">", D(i).material,
                         D(i).rec.sheet.file, D(i).material);

@@ -7,10 +7,12 @@
 ## to RESULTS/sheet/MATERIAL.json): the material's contact sheet
 ## RESULTS/sheet/MATERIAL.png, one row per fit method (in-plane: the
 ## paper's, hemisphere, scene: the recommended), the measured data rendered
-## by POV-Ray (the reference of the fits' PSNR) first and
-## then the render of each lobe count, titled METHOD K: PSNR, all at the
-## measured render's exposure.  @var{R}: @code{file} (the PNG's name,
-## relative to RESULTS) and @code{exposure} (stops).
+## by POV-Ray (the reference of the fits' PSNR) first and then the render
+## of each lobe count, titled "METHOD K: PSNR, FLIP, dE" (the POV-Ray
+## render's PSNR, HDR-FLIP and mean CIEDE2000 against the measured one, as
+## in the record of repro_render_fits), all at the measured render's
+## exposure.  @var{R}: @code{file} (the PNG's name, relative to RESULTS)
+## and @code{exposure} (stops).
 ## @end deftypefn
 function R = db_sheet (material)
   c = repro_config ();
@@ -24,7 +26,7 @@ function R = db_sheet (material)
   nk = numel (c.lobes);
   label = struct ("inplane", "in-plane", "hemisphere", "hemisphere", "scene", "scene");
   ## one panel per image, laid out by hand: image aspect kept, room for a title
-  pw = 220;
+  pw = 256;                     # room for "hemisphere 3: 46.3 dB, FLIP 0.833, dE 24.3"
   ph = round (pw * c.size(1) / c.size(2));
   tt = 36;
   W = pw * (1 + nk);
@@ -43,8 +45,10 @@ function R = db_sheet (material)
         show (rgb, "measured");
       else
         img = exrread (fullfile (rd, sprintf ("%s-%s-%d.exr", material, mth, c.lobes(j))));
-        show (img_tonemap (img, stops), sprintf ("%s %d: %.2f dB", name, c.lobes(j),
-                                                  fits.(mth)(j).psnr_pov));
+        r = fits.(mth)(j);
+        show (img_tonemap (img, stops), sprintf ("%s %d: %.1f dB, FLIP %.3f, dE %.1f", name, c.lobes(j),
+                                                  num (r, "psnr_pov"), num (r, "flip_pov"),
+                                                  num (r, "deltae_pov")), 8, "normal");
       endif
     endfor
   endfor
@@ -53,9 +57,19 @@ function R = db_sheet (material)
   R = struct ("file", fullfile ("sheet", [material ".png"]), "exposure", stops);
 endfunction
 
-function show (rgb, ttl)
+## the number R.(F), NaN when the record lacks it or holds null (NaN, Inf)
+function x = num (r, f)
+  x = NaN;
+  if (isfield (r, f) && isnumeric (r.(f)) && isscalar (r.(f)))
+    x = r.(f);
+  endif
+endfunction
+
+## RGB in the current axes, titled TTL (fit panels: a smaller, regular
+## font, so that PSNR, FLIP and dE fit in the panel's width on one line)
+function show (rgb, ttl, fs = 9, fw = "bold")
   image (rgb);
   axis image off;
   set (gca, "xtick", [], "ytick", []);
-  title (ttl, "interpreter", "none", "fontsize", 9);
+  title (ttl, "interpreter", "none", "fontsize", fs, "fontweight", fw);
 endfunction

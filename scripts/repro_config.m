@@ -18,8 +18,8 @@
 ## steps of `make database`, which record a failure instead of stopping),
 ## @code{mesh}, @code{scene}, @code{materials}, @code{methods}, @code{lobes},
 ## @code{max_angle}, @code{hemi_samples}, @code{size}, @code{spp},
-## @code{spp_study}, @code{pov_aa}, @code{pov_threads}, @code{torus}, @code{fail_psnr},
-## @code{fail_gain}, @code{fail_drop}, and @code{paper_psnr} (the paper's numbers).
+## @code{spp_study}, @code{pov_aa}, @code{pov_threads}, @code{torus}, @code{fail_flip},
+## @code{fail_flip_gain}, @code{fail_flip_drop}, and @code{paper_psnr} (the paper's numbers).
 ## @end deftypefn
 function c = repro_config (file)
   if (nargin < 1)
@@ -54,9 +54,9 @@ function c = repro_config (file)
   c.study_weights = words (get ("STUDY_WEIGHTS"));
   c.study_light = number (get ("STUDY_LIGHT"), "STUDY_LIGHT");
   c.study_table_spp = number (get ("STUDY_TABLE_SPP"), "STUDY_TABLE_SPP");
-  c.fail_psnr = number (get ("FAIL_PSNR"), "FAIL_PSNR");
-  c.fail_gain = number (get ("FAIL_GAIN"), "FAIL_GAIN");
-  c.fail_drop = number (get ("FAIL_DROP"), "FAIL_DROP");
+  c.fail_flip = number (get ("FAIL_FLIP"), "FAIL_FLIP");
+  c.fail_flip_gain = number (get ("FAIL_FLIP_GAIN"), "FAIL_FLIP_GAIN");
+  c.fail_flip_drop = number (get ("FAIL_FLIP_DROP"), "FAIL_FLIP_DROP");
   ## the paper's PSNR (256 x 512 image of the Happy Buddha, 128 rays per pixel)
   c.paper_psnr = struct ("green_metallic_paint", [29.27 31.44 31.02],
                          "red_plastic", [28.12 27.56 27.81]);

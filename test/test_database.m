@@ -7,6 +7,9 @@
 ## the built-in stand-ins written in MERL format) and a truncated file.
 ##   - the run is killed twice and restarted: it finishes, every material has
 ##     its rows, the truncated file one row naming the error;
+##   - FLIP, Delta E (CIEDE2000) and hue beside PSNR for both renderers
+##     (table.csv, report.md, summary.json), the pairs of fits PSNR and FLIP
+##     rank differently, the verdict by FLIP, figures/flip-lobes.png;
 ##   - a rerun does no work and rewrites nothing;
 ##   - a change to inst/pov_render.m (make -W) re-runs only the fits' renders
 ##     and what follows, not the fits nor the measured-data renders;
@@ -109,13 +112,51 @@
 %!   ## each method's materials whose render falls with one more lobe
 %!   assert (numel (regexp (rep, "; more lobes render worse: ")), 3);
 %!   S = jsondecode (fileread (fullfile (db, "summary.json")));
-%!   assert (isfield (S.methods.scene, "largest_drop") && S.methods.scene.largest_drop >= 0);
+%!   assert (isfield (S.methods.scene, "largest_flip_rise") && S.methods.scene.largest_flip_rise >= 0);
 %!   ## every fit rendered by both renderers
-%!   assert (isfield (S.methods.scene, "largest_drop_rt") && S.methods.scene.largest_drop_rt >= 0);
+%!   assert (isfield (S.methods.scene, "largest_flip_rise_rt") && S.methods.scene.largest_flip_rise_rt >= 0);
 %!   assert (all (isfinite (S.psnr_rt.scene(isfinite (S.psnr.scene)))));
 %!   assert (numel (strfind (rep, " (POV-Ray), ")), 3, rep);
 %!   assert (numel (strfind (rep, " (rt_render).")), 3, rep);
-%!   assert (! isempty (regexp (rep, "\\| in-plane \\(the paper's method\\) \\| 2 \\| \\d+\\.\\d\\d \\|")));
+%!   ## the summary: median PSNR, FLIP, Delta E, hue per method and lobe count
+%!   assert (! isempty (regexp (rep, ["\\| in-plane \\(the paper's method\\) \\| 2 \\| \\d+\\.\\d\\d \\| " ...
+%!                                    "\\d\\.\\d{3} \\| \\d+\\.\\d\\d \\| \\d+\\.\\d \\|"])), rep);
+%!   ## FLIP, Delta E (CIEDE2000) and hue beside PSNR in table.csv, both renderers
+%!   okr = strcmp (T(:,4), "ok");
+%!   for q = {"flip", "deltae", "hue"}
+%!     for r = {"pov", "rt"}
+%!       col = find (strcmp (T(1,:), [q{1} "_" r{1}]));
+%!       assert (numel (col), 1, [q{1} "_" r{1}]);
+%!       v = str2double (T(okr,col));
+%!       assert (numel (v), 2 * 3 * 2);
+%!       assert (all (isfinite (v) & v >= 0 & (v <= 1 | ! strcmp (q{1}, "flip"))), [q{1} "_" r{1}]);
+%!     endfor
+%!   endfor
+%!   assert (size (S.flip.scene), [3 2]);      # materials x lobe counts, as S.psnr
+%!   assert (size (S.flip_rt.scene), [3 2]);
+%!   assert (numel (strfind (rep, "FLIP")) > 10);
+%!   ## the pairs of fits that PSNR and FLIP rank differently
+%!   assert (! isempty (regexp (rep, ["PSNR and FLIP rank \\d+ of 30 pairs of fits of the same material " ...
+%!                                    "differently \\(\\d+ %; \\d+ with FLIP apart by more than [\\d.]+\\), " ...
+%!                                    "and \\d+ of 6 pairs of materials fitted by the same method"])), rep);
+%!   assert (S.rank_disagreement.pov.within_pairs, 2 * 15);   # 2 materials, 6 fits each: 15 pairs
+%!   assert (S.rank_disagreement.pov.across_pairs, 3 * 2);    # 3 methods x 2 lobe counts, 1 pair
+%!   ## the recommended fit's FLIP rises, per renderer; the verdict by FLIP
+%!   assert (! isempty (regexp (rep, ["The recommended fit \\(scene\\) renders worse by FLIP with one more " ...
+%!                                    "lobe \\(FLIP up by more than [\\d.]+, FAIL_FLIP_DROP\\) on: .+ with " ...
+%!                                    "POV-Ray; .+ with rt_render\\."])), rep);
+%!   assert (! isempty (regexp (rep, "has FLIP above [\\d.]+ \\(FAIL_FLIP")), rep);
+%!   ## the plots (3 panels) and a contact sheet (3 panels a row): not blank,
+%!   ## with coloured lines or renders
+%!   for f = {"figures/psnr-lobes.png", [560 1560 3]; "figures/flip-lobes.png", [560 1560 3]; ...
+%!            "materials/red-plastic/sheet/red-plastic.png", [NaN 768 3]}'
+%!     img = double (imread (fullfile (db, f{1})));
+%!     sz = size (img);
+%!     assert (isequal (sz(isfinite (f{2})), f{2}(isfinite (f{2}))), [f{1} ": " mat2str(sz)]);
+%!     assert (std (img(:)) > 10, f{1});
+%!     coloured = max (img, [], 3) - min (img, [], 3) > 60;
+%!     assert (nnz (coloured) > 200, f{1});
+%!   endfor
 %!   for f = {"figures/psnr-lobes.png", "gallery/index.html", "summary.json", ...
 %!            "materials/red-plastic/sheet/red-plastic.png", ...
 %!            "materials/red-plastic/fit/red-plastic-hemisphere-2.json", ...
