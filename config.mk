@@ -45,6 +45,11 @@ STUDY_LIGHT ?= 1 0.3 0.6
 # samples per pixel of the scene table (merl_scene; METHODS scene and the study)
 STUDY_TABLE_SPP ?= 4
 STUDY_TABLE_SPP_QUICK ?= 1
+# `make database`: published fits rendered beside the toolbox's, as a baseline
+# (a table of lafortune_ngan's format: Ngan, Durand and Matusik 2005's 1-lobe
+# Lafortune fits, made on the real measurements); a material the table does
+# not have, or an empty value, gets none
+PUBLISHED ?= ../shared/data/ngan2005/lafortune-1lobe.tsv
 # POV-Ray anti-aliasing of the fits' renders
 POV_AA ?= 4
 POV_AA_QUICK ?= 2

@@ -11,7 +11,8 @@
 ## of each lobe count, titled "METHOD K: PSNR, FLIP, dE" (the POV-Ray
 ## render's PSNR, HDR-FLIP and mean CIEDE2000 against the measured one, as
 ## in the record of repro_render_fits), all at the measured render's
-## exposure.  @var{R}: @code{file} (the PNG's name, relative to RESULTS)
+## exposure; in make database a last row has the published fit
+## (repro_render_fits's ngan2005) when it was rendered.  @var{R}: @code{file} (the PNG's name, relative to RESULTS)
 ## and @code{exposure} (stops).
 ## @end deftypefn
 function R = db_sheet (material)
@@ -22,9 +23,17 @@ function R = db_sheet (material)
   ref = exrread (fullfile (rd, [material "-measured-pov.exr"]));   # the fits' renderer: their PSNR's reference
   fits = jsondecode (fileread (fullfile (rd, [material "-fits.json"])));
   [rgb, stops] = img_tonemap (ref, "auto");
-  nm = numel (c.methods);
+  ## the methods' rows, and the published fit's (one lobe) when it was rendered
+  rows_ = c.methods;
+  lobes = repmat ({c.lobes}, 1, numel (rows_));
+  if (isfield (fits, "ngan2005"))
+    rows_{end+1} = "ngan2005";
+    lobes{end+1} = 1;
+  endif
+  nm = numel (rows_);
   nk = numel (c.lobes);
-  label = struct ("inplane", "in-plane", "hemisphere", "hemisphere", "scene", "scene");
+  label = struct ("inplane", "in-plane", "hemisphere", "hemisphere", "scene", "scene",
+                  "ngan2005", "Ngan 2005");
   ## one panel per image, laid out by hand: image aspect kept, room for a title
   pw = 256;                     # room for "hemisphere 3: 46.3 dB, FLIP 0.833, dE 24.3"
   ph = round (pw * c.size(1) / c.size(2));
@@ -33,20 +42,20 @@ function R = db_sheet (material)
   H = (ph + tt) * nm;
   h = figure ("visible", "off", "position", [0, 0, W, H]);
   for i = 1:nm
-    mth = c.methods{i};
+    mth = rows_{i};
     name = mth;
     if (isfield (label, mth))
       name = label.(mth);
     endif
     y = (nm - i) * (ph + tt) / H;
-    for j = 0:nk
+    for j = 0:numel (lobes{i})
       axes ("position", [j * pw / W + 0.003, y + 0.003, pw / W - 0.006, ph / H - 0.006]);
       if (j == 0)
         show (rgb, "measured");
       else
-        img = exrread (fullfile (rd, sprintf ("%s-%s-%d.exr", material, mth, c.lobes(j))));
+        img = exrread (fullfile (rd, sprintf ("%s-%s-%d.exr", material, mth, lobes{i}(j))));
         r = fits.(mth)(j);
-        show (img_tonemap (img, stops), sprintf ("%s %d: %.1f dB, FLIP %.3f, dE %.1f", name, c.lobes(j),
+        show (img_tonemap (img, stops), sprintf ("%s %d: %.1f dB, FLIP %.3f, dE %.1f", name, lobes{i}(j),
                                                   num (r, "psnr_pov"), num (r, "flip_pov"),
                                                   num (r, "deltae_pov")), 8, "normal");
       endif

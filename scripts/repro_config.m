@@ -19,7 +19,9 @@
 ## @code{mesh}, @code{scene}, @code{materials}, @code{methods}, @code{lobes},
 ## @code{max_angle}, @code{hemi_samples}, @code{size}, @code{spp},
 ## @code{spp_study}, @code{pov_aa}, @code{pov_threads}, @code{torus}, @code{fail_flip},
-## @code{fail_flip_gain}, @code{fail_flip_drop}, and @code{paper_psnr} (the paper's numbers).
+## @code{fail_flip_gain}, @code{fail_flip_drop}, @code{published} (a table of
+## published fits, for the database's baseline row), and @code{paper_psnr}
+## (the paper's numbers).
 ## @end deftypefn
 function c = repro_config (file)
   if (nargin < 1)
@@ -54,6 +56,7 @@ function c = repro_config (file)
   c.study_weights = words (get ("STUDY_WEIGHTS"));
   c.study_light = number (get ("STUDY_LIGHT"), "STUDY_LIGHT");
   c.study_table_spp = number (get ("STUDY_TABLE_SPP"), "STUDY_TABLE_SPP");
+  c.published = strtrim (get ("PUBLISHED"));
   c.fail_flip = number (get ("FAIL_FLIP"), "FAIL_FLIP");
   c.fail_flip_gain = number (get ("FAIL_FLIP_GAIN"), "FAIL_FLIP_GAIN");
   c.fail_flip_drop = number (get ("FAIL_FLIP_DROP"), "FAIL_FLIP_DROP");

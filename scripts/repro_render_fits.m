@@ -18,6 +18,10 @@
 ## HDR-FLIP, the mean CIEDE2000 and the hue statistic (img_compare).
 ## Writes RESULTS/render/MATERIAL-METHOD-K.exr and .png.
 ##
+## In make database, the material's published fit (PUBLISHED, read by
+## lafortune_ngan) is rendered too, as the method @code{ngan2005} with one
+## lobe.
+##
 ## @var{R}: @code{antialias} and per method a struct array (one per lobe
 ## count) with @code{lobes}, @code{psnr_pov}, @code{psnr_rt},
 ## @code{flip_pov}, @code{flip_rt}, @code{deltae_pov}, @code{deltae_rt},
@@ -31,10 +35,25 @@ function R = repro_render_fits (material)
   ref = exrread (fullfile (rd, [material "-measured.exr"]));         # rt_render
   refpov = exrread (fullfile (rd, [material "-measured-pov.exr"]));  # POV-Ray
   R = struct ("material", material, "antialias", c.pov_aa);
+  models = struct ();
   for method = c.methods
-    mth = method{1};
     for k = c.lobes
-      m = lafortune_import (fullfile (c.results, "fit", sprintf ("%s-%s-%d.json", material, mth, k)));
+      models.(method{1}){k} = lafortune_import (fullfile (c.results, "fit", sprintf ("%s-%s-%d.json", material, method{1}, k)));
+    endfor
+  endfor
+  ## the published fit of the material (make database, PUBLISHED), as a
+  ## method of its own with one lobe
+  pub = published (c, material);
+  if (! isempty (pub))
+    models.ngan2005 = {pub};
+  endif
+  for method = fieldnames (models)'
+    mth = method{1};
+    for k = 1:numel (models.(mth))
+      m = models.(mth){k};
+      if (isempty (m))
+        continue;
+      endif
       printf ("reproduce: [%s] POV-Ray render, %s fit, %d lobe(s)\n", material, mth, k);
       fflush (stdout);
       [img, pinfo] = pov_render (scene, m, "antialias", c.pov_aa, "threads", c.pov_threads);
@@ -51,10 +70,25 @@ function R = repro_render_fits (material)
                   "deltae_rt", qr.deltae, "hue_pov", qp.hue, "hue_rt", qr.hue,
                   "renderers_psnr", img_psnr (img_rt, img), "pov_time", pinfo.time,
                   "pov_scene_bytes", pinfo.bytes, "rt_time", rinfo.time_total);
-      R.(mth)(find (c.lobes == k)) = r;
+      R.(mth)(merge (strcmp (mth, "ngan2005"), 1, find (c.lobes == k))) = r;
       printf ("reproduce: [%s] %s %d lobe(s): PSNR %.2f dB, FLIP %.4f, dE %.2f (POV-Ray, %.1f s); %.2f dB, FLIP %.4f, dE %.2f (rt_render, %.1f s)\n",
               material, mth, k, r.psnr_pov, r.flip_pov, r.deltae_pov, r.pov_time,
               r.psnr_rt, r.flip_rt, r.deltae_rt, r.rt_time);
     endfor
   endfor
+endfunction
+
+## the published 1-lobe fit of MATERIAL from the table PUBLISHED, in make
+## database (else [], also when the table has no such material or is absent)
+function m = published (c, material)
+  m = [];
+  if (! c.database || isempty (c.published))
+    return;
+  endif
+  if (! exist (c.published, "file"))
+    printf ("reproduce: [%s] no table of published fits at %s (PUBLISHED): no baseline row\n",
+            material, c.published);
+    return;
+  endif
+  m = lafortune_ngan (c.published, material);
 endfunction
