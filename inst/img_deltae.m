@@ -120,13 +120,7 @@ function [de, s] = img_deltae (ref, test, varargin)
   elseif (! (islogical (mask) || (isnumeric (mask) && isreal (mask)
                                  && all (mask(:) == 0 | mask(:) == 1)))
           || ! isequal (size (mask), [h w]))
-    if (isnumeric (mask) || islogical (mask))
-      got = sprintf ("%s %s", strjoin (arrayfun (@num2str, size (mask),
-                                                 "uniformoutput", false), "x"),
-                     class (mask));
-    else
-      got = class (mask);
-    endif
+    got = describe (mask);
     error ("lafortune:badOption",
            "%s: \"mask\" must be a %dx%d logical array (the images' H x W), got %s",
            fname, h, w, got);
@@ -191,17 +185,7 @@ function x = check_image (x, name, lab, fname)
     ok = ok && ndims (x) == 3 && size (x, 3) == 3;
   endif
   if (! ok)
-    if (isnumeric (x) || islogical (x))
-      cplx = "";
-      if (! isreal (x))
-        cplx = "complex ";
-      endif
-      got = sprintf ("%s %s%s", strjoin (arrayfun (@num2str, size (x),
-                                                   "uniformoutput", false), "x"),
-                     cplx, class (x));
-    else
-      got = class (x);
-    endif
+    got = describe (x);
     error ("lafortune:badImage", "%s: %s must be a real double or single %s, got %s",
            fname, name, shape, got);
   endif
@@ -398,7 +382,7 @@ endfunction
 %!error <"nits"> img_deltae (ones (2, 2, 3), ones (2, 2, 3), "nits", NaN)
 %!error <"mask" must be a 2x2 logical array .*got 3x3 logical> img_deltae (ones (2, 2, 3), ones (2, 2, 3), "mask", true (3))
 %!error <"mask" .*got 2x2 double> img_deltae (ones (2, 2, 3), ones (2, 2, 3), "mask", 2 * ones (2))
-%!error <"mask" .*got char> img_deltae (ones (2, 2, 3), ones (2, 2, 3), "mask", "ab")
+%!error <"mask" .*got 1x2 char> img_deltae (ones (2, 2, 3), ones (2, 2, 3), "mask", "ab")
 %!error <"mask" must be a 3x1 .*got 1x3 logical> img_deltae (ones (3, 3), ones (3, 3), "input", "lab", "mask", true (1, 3))
 %!error <unknown option 'colour'> img_deltae (ones (2, 2, 3), ones (2, 2, 3), "colour", 1)
 %!error <NAME, VALUE pairs> img_deltae (ones (2, 2, 3), ones (2, 2, 3), "metric")

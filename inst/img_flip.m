@@ -265,10 +265,7 @@ function F = flip_filters (ppd)
   ## linear RGB -> XYZ from the sRGB primaries and the D65 white, divided by
   ## the white (T); the opponent space YCxCz is linear in it (O): rows
   ## 116 Y (Y* + 16), 500 (X - Y) (Cx) and 200 (Y - Z) (Cz)
-  xy = [0.64 0.33; 0.30 0.60; 0.15 0.06];
-  P = [xy(:,1) ./ xy(:,2), ones(3, 1), (1 - xy(:,1) - xy(:,2)) ./ xy(:,2)]';
-  white = [0.3127; 0.3290; 0.3583] / 0.3290;
-  F.T = (P .* (P \ white)') ./ white;
+  F.T = srgb_xyz ();
   O = [0 116 0; 500 -500 0; 0 200 -200];
   F.A = O * F.T;
   F.Ainv = inv (F.A);

@@ -9,18 +9,7 @@
 function [rgb, exposure] = tonemap (img, exposure, fname)
   if (! (isa (img, "double") || isa (img, "single")) || ! isreal (img)
       || ndims (img) != 3 || size (img, 3) != 3 || isempty (img))
-    if (isnumeric (img) || islogical (img))
-      cplx = "";
-      if (! isreal (img))
-        cplx = "complex ";
-      endif
-      desc = sprintf ("%s %s%s", strjoin (arrayfun (@num2str, size (img),
-                                                    "uniformoutput", false),
-                                          "x"),
-                      cplx, class (img));
-    else
-      desc = class (img);
-    endif
+    desc = describe (img);
     error ("lafortune:badImage",
            "%s: IMG must be a real double or single H x W x 3 array, got %s",
            fname, desc);
