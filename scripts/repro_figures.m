@@ -127,7 +127,7 @@ function study_figure (c, mat, file, q)
     ylab = "HDR-FLIP against the measured render";
   endif
   done (plot_lobes (P, weights, "paper", repmat ({paper}, 1, numel (tables)),
-                    "highlight", find (strcmp (weights, "image")), "panels", names, "ylabel", ylab,
+                    "highlight", find (strcmp (weights, "relative")), "panels", names, "ylabel", ylab,
                     "title", sprintf ("%s: %s of each fit's POV-Ray render, by table and weighting", mat, what),
                     "file", file));
 endfunction

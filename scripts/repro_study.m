@@ -18,7 +18,7 @@
 ## rendered there by POV-Ray with the same samples.  A model met before
 ## (another column, or the main fit step's) is rendered once, and a column
 ## that is a fit of the main step (same table, same weighting: the paper's
-## in-plane/plain, the recommended scene/image) takes its models instead of
+## in-plane/plain, the recommended scene/relative) takes its models instead of
 ## fitting again.
 ##
 ## @var{R}: @code{light_b} and @code{methods}, a struct array with
