@@ -93,7 +93,13 @@ function [hf, hax] = plot_lobes (psnr, names, varargin)
   if (isempty (all_v))
     all_v = [0; 1];
   endif
-  yl = [floor(min (all_v) / 5) * 5, ceil(max (all_v) / 5 + 1e-9) * 5];
+  ## the y range on a round step: 5 (dB) for PSNR-sized values, tenths for
+  ## values in [0, 1] such as FLIP
+  st = 5;
+  if (max (abs (all_v)) <= 1)
+    st = 0.1;
+  endif
+  yl = [floor(min (all_v) / st) * st, ceil(max (all_v) / st + 1e-9) * st];
   col = lines (M);
   pw = 330; ph = 280; L = 75; G = 40; B = 55;
   K0 = 70 + 7.5 * max (cellfun (@numel, [names(:); {"the paper (dashed)"}]));
