@@ -86,8 +86,8 @@
 %!test
 %! ## the MERL-format stand-ins with Ngan et al.'s published 1-lobe fits:
 %! ## 20000 drawn samples give the hemisphere's errors
-%! fits = {"green-metallic-paint", lafortune_ngan ([0.015, 0.0537, 0.0428], [0.22, 0.217, 0.153], -0.591, 0.548, 76);
-%!         "red-plastic", lafortune_ngan ([0.28, 0.0496, 0.0139], [0.25, 0.198, 0.134], -0.63, 0.453, 23.2)};
+%! fits = {"green-metallic-paint", lafortune_ngan([0.015, 0.0537, 0.0428], [0.22, 0.217, 0.153], -0.591, 0.548, 76);
+%!         "red-plastic", lafortune_ngan([0.28, 0.0496, 0.0139], [0.25, 0.198, 0.134], -0.63, 0.453, 23.2)};
 %! for i = 1:rows (fits)
 %!   p = __proxy (fits{i,1});
 %!   if (isempty (p))
