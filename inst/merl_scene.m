@@ -44,7 +44,9 @@
 ## material's BRDF there.
 ## @item weight
 ## N x 1: the fraction of all the image's pixel samples in the cell (the
-## sum is the lit fraction of the image's samples, <= 1).
+## sum is the lit fraction of the image's samples, <= 1); 0 where a MERL
+## material's bin is missing (its value is unknown: the render, @var{img},
+## shows it as 0, and a fit leaves it out).
 ## @item irradiance
 ## N x 3: the irradiance times cos ti there (the mean over the cell), so
 ## that a sample's radiance is @code{rgb .* irradiance}.
@@ -171,7 +173,12 @@ function [S, img] = merl_scene (material, scene, varargin)
   irr = [mean_of(P(:,5)), mean_of(P(:,6)), mean_of(P(:,7))];
   [wi, wo] = slice_dirs (ti, to, cos (ga));
   rgb = zeros (n, 3);
-  if (n > 0)
+  known = true (n, 1);
+  if (n > 0 && strcmp (material_kind (material), "merl"))
+    ## a missing MERL bin renders as 0, but its value is unknown: no weight
+    ## in a fit
+    [rgb, known] = merl_eval (material, wi, wo);
+  elseif (n > 0)
     rgb = material_eval (material, wi, wo);
   endif
 
@@ -184,7 +191,7 @@ function [S, img] = merl_scene (material, scene, varargin)
   img = acc + miss .* double (scene.background(:).');
   img = reshape (img, H, W, 3);
 
-  S = struct ("kind", "scene", "wi", wi, "wo", wo, "rgb", rgb, "weight", wgt,
+  S = struct ("kind", "scene", "wi", wi, "wo", wo, "rgb", rgb, "weight", wgt .* known,
               "irradiance", irr, "peak", max (img(:)), "name", name_of (material), "scene", name_of (scene),
               "bin", opt.bin, "samples", ns, "prior", [], "prior_weight", 0);
   if (opt.prior > 0 && strcmp (material_kind (material), "merl"))
@@ -299,6 +306,17 @@ endfunction
 %! assert (S0.peak < 0.1 * max (ref(:)));                    # measured: 5%
 %! assert (sum (S.weight), sum (S0.weight), 1e-12);
 %! assert (img_psnr (ref, img) > img_psnr (ref, img0) + 20);  # measured: 65.0 and 32.9 dB
+
+%!test
+%! ## a missing MERL bin (merl_standin leaves out grazing angles) has no
+%! ## weight: a fit leaves it out; the image still shows it as 0
+%! b = merl_standin ("red-plastic");
+%! [S, img] = merl_scene (b, scene_make ("sphere", "size", [32 32], "spp", 1));
+%! [~, known] = merl_eval (b, S.wi, S.wo);
+%! assert (any (! known));
+%! assert (all (S.weight(! known) == 0));
+%! assert (all (S.weight(known) > 0));
+%! assert (all (S.rgb(! known,:)(:) == 0));
 
 %!error <Invalid call> merl_scene (1)
 %!error id=lafortune:badScene merl_scene (struct ("rho_d", [1 1 1], "Cxy", [], "Cz", [], "e", []), 1)
