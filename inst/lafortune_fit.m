@@ -297,10 +297,11 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
                                          nlobes, opt, models, info);
     model = models{nlobes};
   endif
-  for c = opt.channels(:)'
-    if (shared)
-      break;
-    endif
+  separate = opt.channels(:)';         # each channel alone (none when shared)
+  if (shared)
+    separate = [];
+  endif
+  for c = separate
     t0 = tic ();
     [D, R] = channel_data (Ss, Sf, fspec, pspec, sc, c, j, xc, xr, jg, jrep, opt);
     ## a given start (in the data's units), or none: grow lobe by lobe
@@ -564,7 +565,7 @@ function opt = table_defaults (opt, S)
     opt.weight = merge (scene, "relative", "plain");
   endif
   if (isempty (opt.color))
-    opt.color = merge (scene, "separate", "separate");
+    opt.color = "separate";             # each channel alone, for every table
   endif
   if (isempty (opt.tries))
     ## a picture's error has local minima (a highlight fitted by the wrong
@@ -596,7 +597,6 @@ function opt = check_opts (opt, nlobes)
   if (! isscalar (opt.tol) || ! (opt.tol >= 0))
     error ("lafortune:badOption", "lafortune_fit: TOL must be a scalar >= 0");
   endif
-
   if (! isscalar (opt.tries) || ! (opt.tries >= 1))
     error ("lafortune:badOption", "lafortune_fit: TRIES must be a positive integer");
   endif

@@ -70,7 +70,6 @@ function C = score (D, p, fcur, dirs, fam, ex)
   lb = log (max (B, realmin));
   g = exp (max (lb(:,fam) .* ex, -700)) .* on(:,fam);
   Sgg = s = d = zeros (nch, numel (ex));
-  F = zeros (m * nch, numel (ex));
   for c = 1:nch
     rr = (c-1)*m+1:c*m;
     r = D.yl(rr) - fcur(rr);
