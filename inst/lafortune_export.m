@@ -241,7 +241,7 @@ endfunction
 %! fprintf (fid, "try\n lafortune_export (m, '%s', 'json');\n exit (3);\ncatch err\n disp (err.identifier);\nend_try_catch\n", f);
 %! fclose (fid);
 %! [st, out] = system (sprintf ("bash -c \"trap '' XFSZ; ulimit -f 0; octave-cli --no-gui --norc --no-history '%s'\" 2>&1", scr));
-%! assert (st, 0, out);
+%! assert (st == 0, "%s", out);
 %! assert (! isempty (strfind (out, "lafortune:unwritable")), out);
 %! assert (fileread (f), before);
 %! unlink (scr);

@@ -675,7 +675,7 @@ info.channels
 %!     cmd = sprintf ("cd '%s' && povray +I'%s' +O'%s' +FE +W17 +H11 -D -V -GA +A0.0 2>&1",
 %!                    d, pov, out);
 %!     [st, txt] = system (cmd);
-%!     assert (st, 0, txt);
+%!     assert (st == 0, "%s", txt);
 %!     [img, info] = exrread (out);
 %!     assert (size (img, 1), 11);
 %!     assert (size (img, 2), 17);

@@ -17,7 +17,7 @@
 %!  endif
 %!  txt = fileread (f);
 %!  a = strfind (txt, "## In class");
-%!  assert (numel (a), 1, "README.md must have one '## In class' section");
+%!  assert (numel (a) == 1, "README.md must have one '## In class' section");
 %!  b = a + strfind (txt(a:end), "```octave")(1) + 9;
 %!  e = b + strfind (txt(b:end), "```")(1) - 2;
 %!  code = txt(b:e);
@@ -72,7 +72,7 @@
 %!   [st, out] = octave_run (sprintf (["m = struct ('rho_d', [0.2 0.1 0.1], 'Cxy', [-1 -1 -1], 'Cz', [1 1 1], 'e', [20 20 20]);\n" ...
 %!                                     "close (plot_plane ([], m, 'file', '%s'));\n"], f),
 %!                           sprintf ("HOME='%s'", h));
-%!   assert (st, 0, out);
+%!   assert (st == 0, "%s", out);
 %!   img = imread (f);
 %!   assert (columns (img) > 1000);
 %!   assert (numel (unique (img(:))) > 20);
@@ -135,7 +135,7 @@
 %! [st, out] = octave_run (["s = scene_make ('sphere', 'size', [240 240], 'spp', 32);\n" ...
 %!                          "rt_render (s, merl_standin ('red-plastic'), 'mode', 'direct', 'chunk', 8192);\n"],
 %!                         "");
-%! assert (st, 0, out);
+%! assert (st == 0, "%s", out);
 %! assert (! any (out == "\r"));
 %! if (isempty (strfind (out, "rt_render: 100% done")))
 %!   printf ("note: the render took under 2 s, so printed no progress\n");

@@ -168,6 +168,6 @@
 %!   confirm_recursive_rmdir (false, "local");
 %!   rmdir (junk, "s");
 %! end_unwind_protect
-%! assert (st, 0, out);
+%! assert (st == 0, "%s", out);
 %! assert (! isempty (strfind (out, "same 1 1, lafortune:noOctFile")), out);
-%! assert (numel (strfind (out, "does not work")), 1, out);
+%! assert (numel (strfind (out, "does not work")) == 1, "%s", out);

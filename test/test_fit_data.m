@@ -109,7 +109,7 @@
 %!   mkdir (d);
 %!   unwind_protect
 %!     [st, out] = system (sprintf ("'%s' '%s' gray-plastic 2>&1", tool, d));
-%!     assert (st, 0, out);
+%!     assert (st == 0, "%s", out);
 %!     S = merl_samples (merl_read (fullfile (d, "gray-plastic.binary")), "max_samples", 40000);
 %!     [m, info] = lafortune_fit (S, 3);
 %!     assert (all (isfinite ([m.rho_d m.Cxy(:)' m.Cz(:)' m.e(:)'])));
