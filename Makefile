@@ -7,6 +7,7 @@
 #   make dist        lafortune-<version>.tar.gz for `pkg install`
 #   make install     pkg install the tarball for the current user
 #   make deps        install missing Debian packages (as root) or say how
+#                    (CLUSTER=1: also the ssh server and Slurm that make check's cluster tests run)
 
 SHELL := /bin/bash
 VERSION := $(shell sed -n 's/^Version: *//p' DESCRIPTION)
@@ -20,6 +21,8 @@ export MERL_PROXY_DIR
 MERL_DIR ?= data/merl
 QUICK ?= 0
 DEB_PACKAGES := octave octave-optim liboctave-dev libopenexr-dev pkg-config povray gnuplot-nox fonts-dejavu-core fonts-freefont-otf parallel
+# test dependencies (make deps CLUSTER=1): the real ssh server and Slurm cluster of make check
+CLUSTER_PACKAGES := slurm-wlm munge openssh-server openssh-client
 
 .PHONY: all deps check bench dist install reproduce database clean distclean
 
@@ -28,7 +31,7 @@ all: dist
 deps:
 	@if command -v dpkg-query >/dev/null 2>&1; then \
 	  missing=""; \
-	  for p in $(DEB_PACKAGES); do \
+	  for p in $(DEB_PACKAGES) $(if $(filter 1,$(CLUSTER)),$(CLUSTER_PACKAGES)); do \
 	    dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q "install ok installed" || missing="$$missing $$p"; \
 	  done; \
 	  if [ -z "$$missing" ]; then echo "deps: all Debian packages present"; \
@@ -205,7 +208,7 @@ database: deps
 	@$(MAKE) --no-print-directory -C src
 ifneq ($(HOSTS),)
 	@$(MAKE) --no-print-directory -s $(DB)/settings.json
-	$(PARALLEL) --sshloginfile $(HOSTS) --workdir $(CURDIR) --halt never $(PARALLEL_OPTS) \
+	$(PARALLEL) -q --sshloginfile $(HOSTS) --workdir $(CURDIR) --halt never $(PARALLEL_OPTS) \
 	  make --no-print-directory -s db-{} $(MAKEOVERRIDES) MERL_DIR=$(DB_DATA) DB=$(abspath $(DB)) \
 	  ::: $(DB_MATS) || true
 endif

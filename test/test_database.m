@@ -13,9 +13,20 @@
 ##   - a rerun does no work and rewrites nothing;
 ##   - a change to inst/pov_render.m (make -W) re-runs only the fits' renders
 ##     and what follows, not the fits nor the measured-data renders;
-##   - GNU parallel over "ssh hosts" (an ssh stand-in that runs the command
-##     here) and the Slurm scripts (an sbatch stand-in that runs the jobs
-##     here) give the same table as the local run.
+##   - GNU parallel over ssh (HOSTS=, a real OpenSSH server started by
+##     test/cluster.sh on 127.0.0.1 with throwaway keys, two host names) gives
+##     the same table as the local run; a remote Octave killed with kill -9
+##     halfway through a material: the run completes that material, and a
+##     rerun with --resume-failed does no work;
+##   - Slurm (scripts/db_slurm_submit on a real single-node cluster, munged,
+##     slurmctld and slurmd started by test/cluster.sh): the job array and the
+##     merge job give the same table; an array task cancelled halfway
+##     (scancel): the merge job completes its material and nothing partial
+##     is left.
+## The ssh and Slurm parts skip with a message when their Debian packages
+## (openssh-server and openssh-client; slurm-wlm and munge) are absent; a
+## daemon that is installed but does not start fails the test with its
+## message.
 ## Run by `make check` (which sets LAFORTUNE_TOP).
 
 %!function top = __top ()
@@ -26,11 +37,20 @@
 %! assert (exist (fullfile (top, "Makefile"), "file") == 2, "run from the project's top folder");
 %!endfunction
 
-%!function [st, txt] = __make (top, db, merl, extra)
-%! cmd = sprintf (["make --no-print-directory -C '%s' %s DB='%s' MERL_DIR='%s' QUICK=1 " ...
-%!                 "SIZE='24 12' SPP=2 HEMI_SAMPLES=2000 LOBES='1 2' POV_AA=0 2>&1"],
-%!                top, extra, db, merl);
-%! [st, txt] = system (cmd);
+%!function s = __opts ()
+%! ## the tiny settings of every run of this test
+%! s = "QUICK=1 SIZE='24 12' SPP=2 HEMI_SAMPLES=2000 LOBES='1 2' POV_AA=0";
+%!endfunction
+
+%!function [st, txt] = __make (top, db, merl, extra, only = false)
+%! ## make (extra: goals and variables) at the test's settings; with ONLY, the command line
+%! cmd = sprintf ("make --no-print-directory -C '%s' %s DB='%s' MERL_DIR='%s' %s 2>&1",
+%!                top, extra, db, merl, __opts ());
+%! if (only)
+%!   [st, txt] = deal (0, cmd);
+%! else
+%!   [st, txt] = system (cmd);
+%! endif
 %!endfunction
 
 %!function T = __table (file)
@@ -52,7 +72,7 @@
 %!   src = fullfile (proxy, [m{1} ".binary"]);
 %!   if (! isempty (proxy) && exist (src, "file"))
 %!     [err, msg] = symlink (src, fullfile (merl, [m{1} ".binary"]));
-%!     assert (err, 0, msg);
+%!     assert (err == 0, "%s", msg);
 %!   else
 %!     merl_write (fullfile (merl, [m{1} ".binary"]), merl_standin (m{1}));
 %!   endif
@@ -63,23 +83,100 @@
 %! fclose (fid);
 %!endfunction
 
-%!test
+%!function [st, txt] = __cluster (top, what, dir)
+%! ## test/cluster.sh: start or stop the test's own daemons (exit 2: not installed)
+%! [st, txt] = system (sprintf ("bash '%s' %s '%s' 2>&1", fullfile (top, "test", "cluster.sh"), what, dir));
+%!endfunction
+
+%!function __bg (cmd, pidf, statf)
+%! ## CMD in the background, in a process group of its own (id written to
+%! ## PIDF); its output goes to STATF.log and its exit status to STATF when it ends
+%! full = sprintf ("setsid sh -c 'echo $$ > \"$0\"; sh -c \"$1\" > \"$2.log\" 2>&1; echo $? > \"$2\"' '%s' '%s' '%s' > /dev/null 2>&1 &",
+%!                 pidf, strrep (cmd, "'", "'\\''"), statf);
+%! assert (system (full), 0);
+%!endfunction
+
+%!function ok = __poll (f, secs)
+%! ## wait at most SECS seconds until F () is true
+%! ok = false;
+%! for i = 1:ceil (secs / 0.2)
+%!   if (f ())
+%!     ok = true;
+%!     return;
+%!   endif
+%!   pause (0.2);
+%! endfor
+%!endfunction
+
+%!function pid = __descendant (root, pattern)
+%! ## the id of an Octave process below process ROOT whose command line
+%! ## matches PATTERN (0: none)
+%! pid = 0;
+%! [~, txt] = system ("ps -e -o pid=,ppid=,comm=,args=");
+%! P = regexp (txt, '^\s*(\d+)\s+(\d+)\s+(\S+)\s+(.*)$', "tokens", "lineanchors", "dotexceptnewline");
+%! ids = cellfun (@(t) str2double (t{1}), P);
+%! par = cellfun (@(t) str2double (t{2}), P);
+%! for i = 1:numel (P)
+%!   if (isempty (regexp (P{i}{3}, "^octave", "once")) || isempty (regexp (P{i}{4}, pattern, "once")))
+%!     continue;
+%!   endif
+%!   p = par(i);
+%!   for up = 1:30
+%!     if (p == root)
+%!       pid = ids(i);
+%!       return;
+%!     endif
+%!     k = find (ids == p, 1);
+%!     if (isempty (k))
+%!       break;
+%!     endif
+%!     p = par(k);
+%!   endfor
+%! endfor
+%!endfunction
+
+%!function left = __partial (db)
+%! ## files a killed step could leave behind: temporaries of atomic writes
+%! [~, left] = system (sprintf ("find '%s' -name '*.tmp*'", db));
+%! left = strtrim (left);
+%!endfunction
+
+%!function J = __joblog (file)
+%! ## GNU parallel's --joblog: one row per job, {host, exit value, signal, material}
+%! L = strsplit (strtrim (fileread (file)), "\n");
+%! J = cell (0, 4);
+%! for i = 2:numel (L)
+%!   f = strsplit (L{i}, "\t");
+%!   J(end+1,:) = {f{2}, str2double(f{7}), str2double(f{8}), regexp(f{9}, "db-(\\S+)", "tokens", "once"){1}};
+%! endfor
+%!endfunction
+
+%!function txt = __slurm_wait (ids, secs)
+%! ## wait at most SECS seconds until Slurm jobs IDS (cell of strings) have left the queue
+%! q = sprintf ("squeue -h -j %s -o '%%i %%t' 2>&1", strjoin (ids, ","));
+%! done = @() isempty (strtrim (nthargout (2, @system, q)));
+%! assert (__poll (done, secs), sprintf ("Slurm jobs %s still queued after %d s: %s",
+%!                                       strjoin (ids, ","), secs, nthargout (2, @system, q)));
+%! txt = "";
+%!endfunction
+
+%!shared top, out, merl, T
 %! top = __top ();
 %! out = tempname ();
 %! merl = fullfile (out, "merl");
+%! T = {};
+%! mkdir (out);
+%! __data (merl);
+
+%!test
 %! db = fullfile (out, "db");
 %! pidf = fullfile (out, "make.pid");
 %! unwind_protect
-%!   mkdir (out);
-%!   __data (merl);
 %!   ## killed twice, at different points, then finished
 %!   for t = [3 2]
 %!     ## make in a process group of its own, whose id the shell writes down
-%!     cmd = sprintf (["setsid sh -c 'echo $$ > \"$0\"; exec make --no-print-directory -C \"$1\" -j2 database " ...
-%!                     "DB=\"$2\" MERL_DIR=\"$3\" QUICK=1 SIZE=\"24 12\" SPP=2 HEMI_SAMPLES=2000 " ...
-%!                     "LOBES=\"1 2\" POV_AA=0' '%s' '%s' '%s' '%s' > '%s/kill.log' 2>&1 &"],
-%!                    pidf, top, db, merl, out);
-%!     assert (system (cmd), 0);
+%!     [~, cmd] = __make (top, db, merl, "-j2 database", true);
+%!     __bg (cmd, pidf, fullfile (out, "kill.status"));
 %!     pause (t);
 %!     pid = str2double (fileread (pidf));
 %!     assert (pid > 1);
@@ -98,7 +195,7 @@
 %!   endfor
 %!   assert (! exist (fullfile (db, "table.csv"), "file"), "the killed runs should not have finished");
 %!   [st, txt] = __make (top, db, merl, "-j2 database");
-%!   assert (st, 0, txt);
+%!   assert (st == 0, "%s", txt);
 %!   T = __table (fullfile (db, "table.csv"));
 %!   ## the published fits (PUBLISHED) of both materials, where ../shared has them
 %!   npub = 2 * (exist (fullfile (top, "..", "shared", "data", "ngan2005", "lafortune-1lobe.tsv"), "file") == 2);
@@ -127,8 +224,8 @@
 %!   ## every fit rendered by both renderers
 %!   assert (isfield (S.methods.scene, "largest_flip_rise_rt") && S.methods.scene.largest_flip_rise_rt >= 0);
 %!   assert (all (isfinite (S.psnr_rt.scene(isfinite (S.psnr.scene)))));
-%!   assert (numel (strfind (rep, " (POV-Ray), ")), 3, rep);
-%!   assert (numel (strfind (rep, " (rt_render).")), 3, rep);
+%!   assert (numel (strfind (rep, " (POV-Ray), ")) == 3, "%s", rep);
+%!   assert (numel (strfind (rep, " (rt_render).")) == 3, "%s", rep);
 %!   ## the summary: median PSNR, FLIP, Delta E, hue per method and lobe count
 %!   assert (! isempty (regexp (rep, ["\\| in-plane \\(the paper's method\\) \\| 2 \\| \\d+\\.\\d\\d \\| " ...
 %!                                    "\\d\\.\\d{3} \\| \\d+\\.\\d\\d \\| \\d+\\.\\d \\|"])), rep);
@@ -137,7 +234,7 @@
 %!   for q = {"flip", "deltae", "hue"}
 %!     for r = {"pov", "rt"}
 %!       col = find (strcmp (T(1,:), [q{1} "_" r{1}]));
-%!       assert (numel (col), 1, [q{1} "_" r{1}]);
+%!       assert (numel (col) == 1, "%s_%s", q{1}, r{1});
 %!       v = str2double (T(okr,col));
 %!       assert (numel (v), 2 * 3 * 2 + npub);
 %!       assert (all (isfinite (v) & v >= 0 & (v <= 1 | ! strcmp (q{1}, "flip"))), [q{1} "_" r{1}]);
@@ -182,75 +279,156 @@
 %!   ## a rerun does no work
 %!   t0 = dir (fullfile (db, "table.csv")).datenum;
 %!   [st, txt] = __make (top, db, merl, "-j2 database");
-%!   assert (st, 0, txt);
+%!   assert (st == 0, "%s", txt);
 %!   assert (isempty (regexp (txt, "fitting|rendering|POV-Ray|FAILED|database: \\d+ materials")), txt);
 %!   assert (dir (fullfile (db, "table.csv")).datenum, t0);
 %!   ## a change to lafortune_import (which only the fits' renders call) re-runs
 %!   ## the fits' renders, not the fits nor the measured renders (make passes -W
 %!   ## to no sub-make: ask for the table itself)
 %!   [st, txt] = __make (top, db, merl, sprintf ("-W inst/lafortune_import.m -j2 '%s'", fullfile (db, "table.csv")));
-%!   assert (st, 0, txt);
+%!   assert (st == 0, "%s", txt);
 %!   assert (! isempty (regexp (txt, "\\[red-plastic\\] POV-Ray render")), txt);
 %!   assert (isempty (regexp (txt, "fitting|rendering the measured")), txt);
 %!   assert (isequal (__table (fullfile (db, "table.csv")), T));
-%!
-%!   ## GNU parallel over ssh hosts; the ssh stand-in runs the command here
-%!   if (system ("command -v parallel >/dev/null 2>&1") != 0)
-%!     printf ("skipped: the GNU parallel path: no 'parallel' (Debian package parallel)\n");
-%!   else
-%!     ssh = fullfile (out, "ssh-here");
-%!     fid = fopen (ssh, "w");
-%!     fputs (fid, ["#!/bin/bash\n# ssh stand-in: skip the options, log the host, run the command here\n" ...
-%!                  "while [ $# -gt 0 ]; do case \"$1\" in -o|-p|-l|-i|-S) shift 2;; -*) shift;; *) break;; esac; done\n" ...
-%!                  "echo \"$1\" >> \"$(dirname \"$0\")/hosts.log\"; shift\n" ...
-%!                  "[ \"$1\" = -- ] && shift\nexec bash -c \"$*\"\n"]);
-%!     fclose (fid);
-%!     system (sprintf ("chmod 755 '%s'", ssh));
-%!     hosts = fullfile (out, "hosts");
-%!     fid = fopen (hosts, "w"); fputs (fid, "1/node-a\n1/node-b\n"); fclose (fid);
-%!     db2 = fullfile (out, "db-parallel");
-%!     [st, txt] = __make (top, db2, merl, sprintf ("database HOSTS='%s' PARALLEL_OPTS='--ssh %s'", hosts, ssh));
-%!     assert (st, 0, txt);
-%!     used = strsplit (strtrim (fileread (fullfile (out, "hosts.log"))), "\n");
-%!     assert (numel (used) >= 3);   # every material went through an "ssh host"
-%!     assert (all (ismember (used, {"node-a", "node-b"})));
-%!     assert (isequal (__table (fullfile (db2, "table.csv")), T));
-%!   endif
-%!
-%!   ## Slurm: the submit script with an sbatch stand-in that runs the jobs here
-%!   bin = fullfile (out, "bin");
-%!   mkdir (bin);
-%!   fid = fopen (fullfile (bin, "sbatch"), "w");
-%!   fputs (fid, ["#!/bin/bash\n# sbatch stand-in: runs the job (every array task in turn) here, now\n" ...
-%!                "arr=; wrap=; script=\n" ...
-%!                "while [ $# -gt 0 ]; do case \"$1\" in\n" ...
-%!                "  --array=*) arr=${1#--array=};; --wrap) wrap=$2; shift;; --wrap=*) wrap=${1#--wrap=};;\n" ...
-%!                "  -*) ;; *) script=$1; shift; break;; esac; shift; done\n" ...
-%!                "export SLURM_SUBMIT_DIR=$PWD\n" ...
-%!                "log=\"$SBATCH_LOG\"\n" ...
-%!                "if [ -n \"$wrap\" ]; then echo \"merge: $wrap\" >> \"$log\"; bash -c \"$wrap\" >> \"$log\" 2>&1 || exit 1\n" ...
-%!                "else for i in $(seq ${arr%-*} ${arr#*-}); do echo \"task $i\" >> \"$log\";\n" ...
-%!                "  SLURM_ARRAY_TASK_ID=$i bash \"$script\" \"$@\" >> \"$log\" 2>&1 || exit 1; done; fi\n" ...
-%!                "echo $RANDOM\n"]);
-%!   fclose (fid);
-%!   system (sprintf ("chmod 755 '%s'", fullfile (bin, "sbatch")));
-%!   db3 = fullfile (out, "db-slurm");
-%!   log = fullfile (out, "sbatch.log");
-%!   cmd = sprintf (["cd '%s' && PATH='%s':$PATH SBATCH_LOG='%s' scripts/db_slurm_submit DB='%s' MERL_DIR='%s' " ...
-%!                   "QUICK=1 SIZE='24 12' SPP=2 HEMI_SAMPLES=2000 LOBES='1 2' POV_AA=0 2>&1"],
-%!                  top, bin, log, db3, merl);
-%!   [st, txt] = system (cmd);
-%!   assert (st, 0, [txt fileread(log)]);
-%!   assert (! isempty (regexp (txt, "job array \\d+ \\(3 materials\\), merge job \\d+")), txt);
-%!   L = fileread (log);
-%!   assert (! isempty (strfind (L, "task 3")) && ! isempty (strfind (L, "merge: make")), L);
-%!   assert (isequal (__table (fullfile (db3, "table.csv")), T));
+
 %! unwind_protect_cleanup
 %!   if (exist (pidf, "file"))     # a run this test started and could not stop
 %!     system (sprintf ("kill -KILL -%d 2>/dev/null", str2double (fileread (pidf))));
-%!   endif
-%!   if (strncmp (out, tempdir (), numel (tempdir ())) && isfolder (out))
-%!     confirm_recursive_rmdir (false, "local");
-%!     rmdir (out, "s");
+%!     unlink (pidf);
 %!   endif
 %! end_unwind_protect
+
+
+%!test
+%! ## GNU parallel over ssh: a real OpenSSH server on 127.0.0.1, hosts node-a and node-b
+%! assert (! isempty (T), "the local run above failed");
+%! if (system ("command -v parallel >/dev/null 2>&1") != 0)
+%!   error ("the GNU parallel path needs 'parallel' (Debian package parallel, a dependency)");
+%! endif
+%! sshd = fullfile (out, "sshd");
+%! pidf = fullfile (out, "ssh-run.pid");
+%! [st, txt] = __cluster (top, "sshd-start", sshd);
+%! if (st == 2)
+%!   printf ("skipped: the GNU parallel path over ssh: %s", txt);
+%!   return;
+%! endif
+%! unwind_protect
+%!   assert (st == 0, "%s", txt);
+%!   hosts = fullfile (out, "hosts");
+%!   fid = fopen (hosts, "w"); fputs (fid, "1/node-a\n1/node-b\n"); fclose (fid);
+%!   via = @(jl) sprintf ("database HOSTS='%s' PARALLEL_OPTS=\"--ssh 'ssh -F %s' --joblog '%s'\"",
+%!                        hosts, fullfile (sshd, "ssh_config"), jl);
+%!   db = fullfile (out, "db-ssh");
+%!   jl = fullfile (out, "ssh.joblog");
+%!   [st, txt] = __make (top, db, merl, via (jl));
+%!   assert (st == 0, "%s", txt);
+%!   ## every material ran on an ssh host and finished there
+%!   J = __joblog (jl);
+%!   assert (sort (J(:,4)), {"green-metallic-paint"; "red-plastic"; "truncated"});
+%!   assert (all (ismember (J(:,1), {"node-a", "node-b"})), strjoin (J(:,1), " "));
+%!   assert (all ([J{:,2}] == 0), "%s", txt);
+%!   nlog = numel (strfind (fileread (fullfile (sshd, "sshd.log")), "Accepted publickey"));
+%!   assert (nlog >= 3, fileread (fullfile (sshd, "sshd.log")));
+%!   assert (isequal (__table (fullfile (db, "table.csv")), T));
+%!
+%!   ## a remote job's Octave killed (kill -9) halfway through red-plastic (its
+%!   ## fits are done, their renders are not): the run completes that material
+%!   db = fullfile (out, "db-ssh-kill");
+%!   jl = fullfile (out, "ssh-kill.joblog");
+%!   statf = fullfile (out, "ssh-kill.status");
+%!   [~, cmd] = __make (top, db, merl, via (jl), true);
+%!   __bg (cmd, pidf, statf);
+%!   sshpid = str2double (fileread (fullfile (sshd, "sshd.pid")));
+%!   victim = @() __descendant (sshpid, 'repro_step \("render_fits", "red-plastic"\)');
+%!   assert (__poll (@() victim () > 0, 300), "no remote Octave rendered red-plastic's fits within 300 s");
+%!   assert (system (sprintf ("kill -KILL %d", victim ())), 0);
+%!   assert (__poll (@() exist (statf, "file") == 2, 600), "the run did not end within 600 s");
+%!   log = fileread ([statf ".log"]);
+%!   assert (str2double (fileread (statf)) == 0, "%s", log);
+%!   J = __joblog (jl);
+%!   k = strcmp (J(:,4), "red-plastic");
+%!   assert (J{k,2} != 0 || J{k,3} != 0, "the killed job should have failed");
+%!   assert (all ([J{! k,2}] == 0));
+%!   assert (isequal (__table (fullfile (db, "table.csv")), T));
+%!   assert (__partial (db), "");
+%!   ## a rerun of the failed job (--resume-failed) finds nothing left to do
+%!   [st, txt] = __make (top, db, merl, [via(jl) " PARALLEL_OPTS+=--resume-failed"]);
+%!   assert (st == 0, "%s", txt);
+%!   assert (isempty (regexp (txt, "fitting|rendering|POV-Ray render")), txt);
+%!   J = __joblog (jl);
+%!   assert (J{end,4}, "red-plastic");
+%!   assert ([J{end,2:3}], [0 0]);
+%! unwind_protect_cleanup
+%!   if (exist (pidf, "file"))
+%!     system (sprintf ("kill -KILL -%d 2>/dev/null", str2double (fileread (pidf))));
+%!     unlink (pidf);
+%!   endif
+%!   [st, txt] = __cluster (top, "sshd-stop", sshd);
+%!   assert (st == 0, "%s", txt);
+%! end_unwind_protect
+
+%!test
+%! ## Slurm: scripts/db_slurm_submit on a real single-node cluster
+%! assert (! isempty (T), "the local run above failed");
+%! slurm = fullfile (out, "slurm");
+%! [st, txt] = __cluster (top, "slurm-start", slurm);
+%! if (st == 2)
+%!   printf ("skipped: the Slurm path: %s", txt);
+%!   return;
+%! endif
+%! old = getenv ("SLURM_CONF");
+%! setenv ("SLURM_CONF", fullfile (slurm, "slurm.conf"));
+%! unwind_protect
+%!   assert (st == 0, "%s", txt);
+%!   logs = fullfile (out, "slurm-logs");
+%!   submit = @(db) system (sprintf ("cd '%s' && SLURM_LOG_DIR='%s' scripts/db_slurm_submit DB='%s' MERL_DIR='%s' %s 2>&1",
+%!                                   top, logs, db, merl, __opts ()));
+%!   db = fullfile (out, "db-slurm");
+%!   [st, txt] = submit (db);
+%!   assert (st == 0, "%s", txt);
+%!   id = regexp (txt, "job array (\\d+) \\(3 materials\\), merge job (\\d+)", "tokens", "once");
+%!   assert (numel (id) == 2, "%s", txt);
+%!   __slurm_wait (id, 600);
+%!   merge = fileread (fullfile (logs, sprintf ("slurm-lafortune-db-merge-%s.out", id{2})));
+%!   assert (! isempty (strfind (merge, "database: done")), merge);
+%!   ## the array did every material; the merge job only wrote the report
+%!   assert (isempty (regexp (merge, "fitting|rendering|POV-Ray render")), merge);
+%!   for t = 1:3
+%!     task = fileread (fullfile (logs, sprintf ("slurm-lafortune-db-%s_%d.out", id{1}, t)));
+%!     assert (! isempty (regexp (task, "\\[(green-metallic-paint|red-plastic|truncated)\\]")), task);
+%!   endfor
+%!   assert (isequal (__table (fullfile (db, "table.csv")), T));
+%!
+%!   ## task 1 (green-metallic-paint) cancelled halfway: after its fits, before its sheet
+%!   db = fullfile (out, "db-slurm-cancel");
+%!   [st, txt] = submit (db);
+%!   assert (st == 0, "%s", txt);
+%!   id = regexp (txt, "job array (\\d+) \\(3 materials\\), merge job (\\d+)", "tokens", "once");
+%!   mat = fullfile (db, "materials", "green-metallic-paint");
+%!   fitted = @() exist (fullfile (mat, "fit", "green-metallic-paint.json"), "file") == 2;
+%!   assert (__poll (fitted, 300), "task 1 made no fit record within 300 s");
+%!   assert (! exist (fullfile (mat, "sheet", "green-metallic-paint.json"), "file"),
+%!           "task 1 finished before it could be cancelled");
+%!   [st, txt] = system (sprintf ("scancel %s_1 2>&1", id{1}));
+%!   assert (st == 0, "%s", txt);
+%!   __slurm_wait (id, 600);
+%!   task = fileread (fullfile (logs, sprintf ("slurm-lafortune-db-%s_1.out", id{1})));
+%!   assert (! isempty (strfind (task, "CANCELLED")), task);
+%!   ## the merge job did the rest of that material, and only of that one
+%!   merge = fileread (fullfile (logs, sprintf ("slurm-lafortune-db-merge-%s.out", id{2})));
+%!   assert (! isempty (regexp (merge, "\\[green-metallic-paint\\] (POV-Ray render|rendering)")), merge);
+%!   assert (isempty (regexp (merge, "\\[(red-plastic|truncated)\\]")), merge);
+%!   assert (isequal (__table (fullfile (db, "table.csv")), T));
+%!   assert (__partial (db), "");
+%! unwind_protect_cleanup
+%!   [st, txt] = __cluster (top, "slurm-stop", slurm);
+%!   setenv ("SLURM_CONF", old);
+%!   assert (st == 0, "%s", txt);
+%! end_unwind_protect
+
+%!test
+%! ## the scratch folder of the blocks above
+%! if (strncmp (out, tempdir (), numel (tempdir ())) && isfolder (out))
+%!   confirm_recursive_rmdir (false, "local");
+%!   rmdir (out, "s");
+%! endif
