@@ -5,6 +5,8 @@
 ## @deftypefn  {lafortune} {@var{img} =} rt_render (@var{scene}, @var{material})
 ## @deftypefnx {lafortune} {@var{img} =} rt_render (@var{scene}, @var{material}, @var{option}, @var{value}, @dots{})
 ## @deftypefnx {lafortune} {[@var{img}, @var{info}] =} rt_render (@dots{})
+## @deftypefnx {lafortune} {[@var{img}, @var{info}, @var{cache}] =} rt_render (@dots{})
+## @deftypefnx {lafortune} {@var{img} =} rt_render (@var{scene}, @var{material}, "cache", @var{cache}, @dots{})
 ## Render a scene with a measured (MERL) or Lafortune material: the Octave raytracer.
 ##
 ## @var{scene} is a struct from @code{scene_make}; every object gets
@@ -84,13 +86,27 @@
 ## generator's state is restored afterwards), so the same scene gives the same
 ## image.
 ##
+## Trace once, shade many: in slice mode the trace does not depend on the
+## material, so the third output @var{cache} keeps what the shading needs of
+## every primary sample (the lit hits' table weights and cos (theta_i), the
+## misses; about 25 bytes per lit sample and 1 per sample), and
+## @code{rt_render (scene, other, "cache", cache)} renders another material
+## in the same scene with the same options (@code{"jitter"}, @code{"chunk"},
+## @code{"slice_size"}) without tracing a ray.  The image is bit for bit the
+## one a full render gives.  A render with @var{cache} returns it again (so a
+## loop can pass its own output back), and @var{cache} is empty in direct mode; a cache
+## from another scene or other options is an error
+## (@code{lafortune:badOption}).
+##
 ## @var{info} reports: @code{mode}, @code{time_setup} (BVH, slice table),
 ## @code{time_intersect} (camera rays and their intersection),
 ## @code{time_shadow}, @code{time_shade}, @code{time_total} (seconds),
 ## @code{rays} (primary + shadow), @code{rays_per_second}
 ## (@code{rays / time_total}), @code{material_bytes} (memory of what the
 ## shading used: the slice table, or the whole material struct in direct
-## mode), @code{slice_size}, @code{spp}.
+## mode), @code{slice_size}, @code{spp}, @code{cached} (true when the
+## render used @var{cache}; @code{rays} then counts the rays the cached
+## trace took).
 ##
 ## @example
 ## @group
@@ -100,12 +116,16 @@
 ## info.material_bytes        # the slice, not the 35 MB table
 ## [img2, info2] = rt_render (scene, brdf, "mode", "direct");
 ## img_psnr (img2, img)       # > 50 dB
+## ## one trace, many materials
+## [img, ~, cache] = rt_render (scene, brdf);
+## fit = lafortune_fit (merl_samples (brdf), 2);
+## img3 = rt_render (scene, fit, "cache", cache);   # no ray traced
 ## @end group
 ## @end example
 ## @seealso{scene_make, scene_slice, material_eval, rt_intersect, rt_bvh, img_psnr}
 ## @end deftypefn
 
-function [img, info] = rt_render (scene, material, varargin)
+function [img, info, cache] = rt_render (scene, material, varargin)
   if (nargin < 2)
     print_usage ();
   endif
@@ -119,7 +139,7 @@ function [img, info] = rt_render (scene, material, varargin)
   endif
   opt = parse_opts (varargin, "rt_render",
                     struct ("mode", "auto", "progress", true, "jitter", scene_jitter (scene),
-                            "chunk", 65536, "slice_size", [128 64]));
+                            "chunk", 65536, "slice_size", [128 64], "cache", []));
   if (! ischar (opt.mode) || ! any (strcmp (opt.mode, {"auto", "slice", "direct"})))
     error ("lafortune:badOption", "rt_render: MODE must be \"auto\", \"slice\" or \"direct\"");
   endif
@@ -151,7 +171,9 @@ function [img, info] = rt_render (scene, material, varargin)
   endif
 
   ## ---- setup: acceleration structures, normals, the slice table
-  [objs, epsilon] = scene_setup (scene);
+  if (isempty (opt.cache))             # a cached render traces nothing
+    [objs, epsilon] = scene_setup (scene);
+  endif
   cam = scene_camera (scene);
   if (strcmp (mode, "slice"))
     [Rm, sl] = slice_table (scene, material, n, -cam.f);
@@ -174,6 +196,26 @@ function [img, info] = rt_render (scene, material, varargin)
   bg = double (scene.background(:).');
   nshadow = 0;
   t_int = t_sh = t_shade = 0;
+  ## the trace cache: what slice shading needs of each chunk's trace
+  key = struct ("scene", scene, "jitter", logical (opt.jitter), "chunk", chunk, "slice_size", n);
+  cached = ! isempty (opt.cache);
+  if (cached)
+    if (! strcmp (mode, "slice"))
+      error ("lafortune:badOption",
+             "rt_render: CACHE serves slice mode only (orthographic camera, directional light), this render is in %s mode",
+             mode);
+    endif
+    if (! (isstruct (opt.cache) && isscalar (opt.cache) && isfield (opt.cache, "key")
+           && isfield (opt.cache, "chunks") && isequal (opt.cache.key, key)))
+      error ("lafortune:badOption",
+             "rt_render: CACHE must be the third output of rt_render for the same scene and options (jitter, chunk, slice_size)");
+    endif
+    nshadow = opt.cache.nshadow;
+  endif
+  keep = nargout > 2 && strcmp (mode, "slice") && ! cached;
+  if (keep)
+    chunks = cell (1, ceil (total / chunk));
+  endif
   if (opt.progress)
     prog = progress_line ("rt_render");
   endif
@@ -182,33 +224,58 @@ function [img, info] = rt_render (scene, material, varargin)
     rand ("state", scene.seed);
     for k0 = 0:chunk:total-1
       m = min (chunk, total - k0);
-      t0 = tic ();
+      ic = k0 / chunk + 1;
       k = k0 + (0:m-1).';
       pix = mod (k, npix) + 1;
-      [O, D] = sample_rays (scene, cam, k, opt.jitter);
-      t_int += toc (t0);
-      [T, tt] = scene_trace (objs, scene, O, D, epsilon);
-      t_int += tt(1);
-      t_sh += tt(2);
-      t_shade += tt(3);
-      nshadow += T.nshadow;
+      if (cached)
+        Tc = opt.cache.chunks{ic};
+      else
+        t0 = tic ();
+        [O, D] = sample_rays (scene, cam, k, opt.jitter);
+        t_int += toc (t0);
+        [T, tt] = scene_trace (objs, scene, O, D, epsilon);
+        t_int += tt(1);
+        t_sh += tt(2);
+        t_shade += tt(3);
+        nshadow += T.nshadow;
+      endif
 
       t0 = tic ();
-      il = find (T.lit);
-      rad = zeros (numel (il), 3);
-      if (! isempty (il))
+      if (! cached)
+        il = find (T.lit);
         if (strcmp (mode, "slice"))
-          rad = double (slice_lookup (Rm, sl, T.Ns(il,:))) .* T.cosi(il);
-        else
+          Tc = struct ("h", int32 (T.h(il)), "w", slice_weights (sl, T.Ns(il,:)),
+                       "cosi", T.cosi(il), "miss", T.miss);
+          if (keep)
+            chunks{ic} = Tc;
+          endif
+        endif
+      endif
+      if (strcmp (mode, "slice"))
+        rad = double (slice_lookup (Rm, Tc.w)) .* Tc.cosi;
+        lith = Tc.h;
+        miss = Tc.miss;
+      else
+        rad = zeros (numel (il), 3);
+        if (! isempty (il))
           [wi, wo] = local_dirs (T.Ns(il,:), T.L(il,:), T.V(il,:));
           rad = material_eval (material, wi, wo) .* T.cosi(il) .* T.E(il,:);
         endif
+        lith = T.h(il);
+        miss = T.miss;
       endif
-      val = zeros (m, 3);
-      val(T.h(il),:) = rad;
-      val(T.miss,:) = repmat (bg, nnz (T.miss), 1);
+      ## each pixel's sum over the chunk's samples in their order; the
+      ## samples that add 0 (shadow, and misses on a black background) are
+      ## left out, which changes no bit of the sum
+      j = double (lith);
+      if (any (bg))
+        j = [j; find(miss)];
+        rad = [rad; repmat(bg, nnz (miss), 1)];
+        [j, o] = sort (j);
+        rad = rad(o,:);
+      endif
       for c = 1:3
-        acc(:,c) += accumarray (pix, val(:,c), [npix 1]);
+        acc(:,c) += accumarray (pix(j), rad(:,c), [npix 1]);
       endfor
       t_shade += toc (t0);
 
@@ -220,6 +287,12 @@ function [img, info] = rt_render (scene, material, varargin)
     rand ("state", state);
   end_unwind_protect
   img = reshape (acc / spp, H, W, 3);
+  cache = [];
+  if (keep)
+    cache = struct ("key", key, "chunks", {chunks}, "nshadow", nshadow);
+  elseif (cached)
+    cache = opt.cache;
+  endif
   time_total = toc (t_start);
   if (opt.progress)
     progress_line (prog, "done", time_total);
@@ -228,7 +301,8 @@ function [img, info] = rt_render (scene, material, varargin)
   info = struct ("mode", mode, "time_setup", time_setup, "time_intersect", t_int,
                  "time_shadow", t_sh, "time_shade", t_shade, "time_total", time_total,
                  "rays", rays, "rays_per_second", rays / time_total,
-                 "material_bytes", material_bytes, "slice_size", [], "spp", spp);
+                 "material_bytes", material_bytes, "slice_size", [], "spp", spp,
+                 "cached", cached);
   if (strcmp (mode, "slice"))
     info.slice_size = n;
   endif
@@ -268,7 +342,9 @@ function [Rm, sl] = slice_table (scene, material, n, V)
 endfunction
 
 ## Bilinear lookup of the slice table at unit normals N (m x 3).
-function v = slice_lookup (Rm, sl, N)
+## the bilinear weights of the table's entries for hit normals N: what the
+## trace cache keeps of a hit (the same for every material)
+function w = slice_weights (sl, N)
   th = acos (min (max (N * sl.H.', -1), 1));
   ps = atan2 (abs (N * sl.B.'), N * sl.T.');
   nh = sl.nh;
@@ -277,9 +353,15 @@ function v = slice_lookup (Rm, sl, N)
   fj = min (max (ps / pi * (np - 1), 0), np - 1);
   i0 = min (floor (fi), nh - 2);
   j0 = min (floor (fj), np - 2);
-  a = single (fi - i0);
-  b = single (fj - j0);
-  k = i0 + 1 + j0 * nh;
+  w = struct ("a", single (fi - i0), "b", single (fj - j0), "k", int32 (i0 + 1 + j0 * nh), "nh", nh);
+endfunction
+
+## the table RM interpolated with the weights W of slice_weights
+function v = slice_lookup (Rm, w)
+  a = w.a;
+  b = w.b;
+  k = double (w.k);
+  nh = w.nh;
   v = ((1 - a) .* (1 - b)) .* Rm(k,:) + (a .* (1 - b)) .* Rm(k+1,:) ...
       + ((1 - a) .* b) .* Rm(k+nh,:) + (a .* b) .* Rm(k+nh+1,:);
 endfunction
@@ -323,6 +405,43 @@ endfunction
 %! assert (! isequal (a, c));
 %! assert (img_psnr (a, c) > 20);
 
+%!test
+%! ## trace once, shade many: the cached render is the full render, bit for bit
+%! sc = scene_make ("spheres", "size", [20 30], "spp", 3);
+%! m = struct ("rho_d", [0.2 0.3 0.1], "Cxy", [-1 -1 -1], "Cz", [1 1 1], "e", [30 40 50]);
+%! [a, ia, C] = rt_render (sc, lam, "chunk", 500, "progress", false);
+%! assert (! ia.cached && ! isempty (C));
+%! [b, ib] = rt_render (sc, m, "cache", C, "chunk", 500, "progress", false);
+%! assert (ib.cached);
+%! assert (ib.rays, ia.rays);
+%! [~, ~, C2] = rt_render (sc, m, "cache", C, "chunk", 500, "progress", false);
+%! assert (isequal (C2, C));
+%! assert (isequal (b, rt_render (sc, m, "chunk", 500, "progress", false)));
+%! assert (isequal (a, rt_render (sc, lam, "cache", C, "chunk", 500, "progress", false)));
+%! ## the measured data too
+%! brdf = merl_standin ("red-plastic");
+%! assert (isequal (rt_render (sc, brdf, "cache", C, "chunk", 500, "progress", false),
+%!                  rt_render (sc, brdf, "chunk", 500, "progress", false)));
+%! ## a background is shaded from the cache too
+%! sb = sc; sb.background = [0.1 0.2 0.3];
+%! [~, ~, Cb] = rt_render (sb, lam, "progress", false);
+%! assert (isequal (rt_render (sb, m, "cache", Cb, "progress", false), rt_render (sb, m, "progress", false)));
+%! ## direct mode keeps no cache
+%! [~, ~, Cd] = rt_render (scene_make ("sphere", "size", 6, "camera", "perspective"), lam, "progress", false);
+%! assert (isempty (Cd));
+%!error <same scene and options> 
+%! sc = scene_make ("sphere", "size", [8 8], "spp", 1);
+%! lam = struct ("rho_d", [0.8 0.5 0.2], "Cxy", [0 0 0], "Cz", [0 0 0], "e", [1 1 1]);
+%! [~, ~, C] = rt_render (sc, lam, "progress", false);
+%! sc.seed = 5;
+%! rt_render (sc, lam, "cache", C, "progress", false);
+%!error <same scene and options>
+%! sc = scene_make ("sphere", "size", [8 8], "spp", 1);
+%! lam = struct ("rho_d", [0.8 0.5 0.2], "Cxy", [0 0 0], "Cz", [0 0 0], "e", [1 1 1]);
+%! [~, ~, C] = rt_render (sc, lam, "progress", false);
+%! rt_render (sc, lam, "cache", C, "chunk", 7, "progress", false);
+%!error id=lafortune:badOption rt_render (scene_make ("sphere", "size", 4), struct ("rho_d", [1 1 1], "Cxy", [], "Cz", [], "e", []), "cache", struct ("x", 1))
+%!error <slice mode only> rt_render (scene_make ("sphere", "size", 4, "camera", "perspective"), struct ("rho_d", [1 1 1], "Cxy", [], "Cz", [], "e", []), "cache", struct ("key", 1, "chunks", {{}}))
 %!error <Invalid call> rt_render (1)
 %!error id=lafortune:badMaterial rt_render (scene_make ("sphere", "size", 4), struct ("foo", 1))
 %!error id=lafortune:badMaterial rt_render (scene_make ("sphere", "size", 4), 42)

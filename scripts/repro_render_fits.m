@@ -47,6 +47,7 @@ function R = repro_render_fits (material)
   if (! isempty (pub))
     models.ngan2005 = {pub};
   endif
+  cache = [];         # rt_render's trace, made by the first fit's render, shaded by the rest
   for method = fieldnames (models)'
     mth = method{1};
     for k = 1:numel (models.(mth))
@@ -62,7 +63,7 @@ function R = repro_render_fits (material)
       img_write_png ([base ".png"], img, "auto");
       ## the same model through the Octave raytracer, with the measured
       ## render's samples
-      [img_rt, rinfo] = rt_render (scene, m, "progress", false);
+      [img_rt, rinfo, cache] = rt_render (scene, m, "progress", false, "cache", cache);
       qp = img_compare (refpov, img);
       qr = img_compare (ref, img_rt);
       r = struct ("lobes", k, "psnr_pov", qp.psnr, "psnr_rt", qr.psnr,
