@@ -1,16 +1,20 @@
 ## Copyright (C) 2026 The lafortune developers
 ## SPDX-License-Identifier: GPL-3.0-or-later
 ##
-## bench_database: `make database` end to end with 1 and with 2 jobs on the
-## same materials, into fresh scratch folders: wall time per run, the
-## speed-up from 1 to 2 jobs (target >= 1.8 on 2 cores; one job already
-## renders with POV-Ray on all cores, so the table also gives one job with
-## one POV-Ray thread, which is what make -j 2 runs twice), seconds per
-## material, and the time per material by stage (median over the materials,
-## from the steps' records).  Materials: every *.binary in BENCH_MERL_DIR
-## (default: the MERL-format stand-ins in MERL_PROXY_DIR); settings: the
-## defaults of config.mk, or what BENCH_MAKE_ARGS adds (e.g. "QUICK=1").
-## Prints a table; not a test.  Run: make bench, or
+## bench_database: `make database` end to end, before and after, in one run:
+## this checkout and a base version (BENCH_BASE, default 910a12b, the last
+## commit of 0.4.3, exported by git archive into a scratch folder and built
+## there), each with 1 and with 2 jobs on the same materials, into fresh
+## scratch folders.  Prints the wall time per run, seconds per material, the
+## ratio base / this checkout, the time per material by stage (median over
+## the materials, from the steps' records), and the extrapolation to 100
+## materials: on this machine with make -j N (N = its cores), and on one
+## 64-core Slurm node (64 array tasks of one CPU at once; a task's time is
+## taken from the N-job run, where each job has about one core).
+## Materials: every *.binary in BENCH_MERL_DIR (default: the MERL-format
+## stand-ins in MERL_PROXY_DIR); settings: the defaults of each version's
+## config.mk, or what BENCH_MAKE_ARGS adds (e.g. "QUICK=1").  BENCH_BASE=none
+## skips the base.  Prints tables; not a test.  Run: make bench, or
 ##   octave-cli scripts/bench_database.m
 
 1;
@@ -47,20 +51,76 @@ if (isempty (merl) || isempty (dir (fullfile (merl, "*.binary"))))
 endif
 args = getenv ("BENCH_MAKE_ARGS");
 n = numel (dir (fullfile (merl, "*.binary")));
+jobs = max (nproc (), 2);
 printf ("bench_database: %d materials from %s, settings: %s, %d cores\n", n, merl,
         ifelse_str (isempty (args), "config.mk defaults", args), nproc ());
-system (sprintf ("make --no-print-directory -s -C '%s/src' > /dev/null", top));
-[w1, S1] = run_db (top, merl, 1, args);
-w1t = run_db (top, merl, 1, [args " POV_THREADS=1"]);
-w2 = run_db (top, merl, 2, args);
-printf ("\n| jobs | POV-Ray threads | wall time (s) | s per material | speed-up |\n|---|---|---|---|---|\n");
-printf ("| 1 | all cores | %.1f | %.1f | 1.00 |\n", w1, w1 / n);
-printf ("| 1 | 1 | %.1f | %.1f | %.2f |\n", w1t, w1t / n, w1 / w1t);
-printf ("| 2 | 1 per job | %.1f | %.1f | %.2f (%.2f against 1 job, 1 thread) |\n", w2, w2 / n,
-        w1 / w2, w1t / w2);
+## the versions: this checkout, and the base exported and built in scratch
+V = struct ("name", "this checkout", "top", top);
+base = getenv ("BENCH_BASE");
+if (isempty (base))
+  base = "910a12b";
+endif
+scratch = tempname ();
+mkdir (scratch);
+unwind_protect
+  if (! strcmp (base, "none"))
+    bt = fullfile (scratch, "base");
+    mkdir (bt);
+    st = system (sprintf ("git -C '%s' archive '%s' | tar -x -C '%s' && make --no-print-directory -s -C '%s/src' > '%s/build.log' 2>&1",
+                          top, base, bt, bt, scratch));
+    if (st != 0)
+      error ("bench_database: cannot export and build %s (see %s/build.log)", base, scratch);
+    endif
+    V(2) = struct ("name", sprintf ("base %s", base), "top", bt);
+  endif
+  system (sprintf ("make --no-print-directory -s -C '%s/src' > /dev/null", top));
+  for v = 1:numel (V)
+    printf ("bench_database: %s, 1 job\n", V(v).name);
+    fflush (stdout);
+    [V(v).w1, V(v).S] = run_db (V(v).top, merl, 1, args);
+    printf ("bench_database: %s, %d jobs\n", V(v).name, jobs);
+    fflush (stdout);
+    V(v).wj = run_db (V(v).top, merl, jobs, args);
+  endfor
+unwind_protect_cleanup
+  confirm_recursive_rmdir (false, "local");
+  rmdir (scratch, "s");
+end_unwind_protect
+
+printf ("\n| version | jobs | wall time (s) | s per material | base / this |\n|---|---|---|---|---|\n");
+for v = 1:numel (V)
+  printf ("| %s | 1 | %.1f | %.1f | %s |\n", V(v).name, V(v).w1, V(v).w1 / n,
+          ifelse_str (v == 1, "", sprintf ("%.2f", V(v).w1 / V(1).w1)));
+  printf ("| %s | %d | %.1f | %.1f | %s |\n", V(v).name, jobs, V(v).wj, V(v).wj / n,
+          ifelse_str (v == 1, "", sprintf ("%.2f", V(v).wj / V(1).wj)));
+endfor
+
 printf ("\nTime per material by stage, 1 job (median over materials, s; Octave start-up not included):\n\n");
-printf ("| stage | median (s) | max (s) |\n|---|---|---|\n");
-for f = fieldnames (S1.stage_time)'
-  t = S1.stage_time.(f{1});
-  printf ("| %s | %.1f | %.1f |\n", f{1}, median (t), max (t));
+st = fieldnames (V(1).S.stage_time)';
+for v = 2:numel (V)
+  for f = fieldnames (V(v).S.stage_time)'
+    if (! any (strcmp (st, f{1})))
+      st{end+1} = f{1};
+    endif
+  endfor
+endfor
+printf ("| stage |%s\n|---|%s\n", sprintf (" %s |", V.name), repmat ("---|", 1, numel (V)));
+for f = st
+  printf ("| %s |", f{1});
+  for v = 1:numel (V)
+    if (isfield (V(v).S.stage_time, f{1}))
+      printf (" %.1f |", median (V(v).S.stage_time.(f{1})));
+    else
+      printf (" - |");
+    endif
+  endfor
+  printf ("\n");
+endfor
+
+printf ("\n100 materials, extrapolated from these runs:\n\n| version | %d cores, make -j%d | one 64-core Slurm node |\n|---|---|---|\n",
+        nproc (), jobs);
+for v = 1:numel (V)
+  task = jobs * V(v).wj / n;                 # one material on about one core
+  printf ("| %s | %.1f min | %.1f min |\n", V(v).name, 100 * V(v).wj / n / 60,
+          ceil (100 / 64) * task / 60);
 endfor
