@@ -8,7 +8,9 @@
 ## its folder off the path, and values and Jacobians (lafortune_core itself,
 ## called from its private folder; lafortune_eval) and whole fits
 ## (lafortune_fit) are compared bit for bit, on ordinary, stiff and extreme
-## models.
+## models.  The same for pov_knots's greedy refinement of one table, which
+## calls the oct-file __pov_knots__ when it is built: the entries it chooses
+## on random tables (ties, NaN, masks) and whole POV-Ray scene files.
 
 %!function varargout = __octave_engine (fn)
 %!  ## FN () with the oct-file __lafortune_core__ off the path
@@ -140,6 +142,72 @@
 %! [mo, io] = __octave_engine (@() lafortune_fit (S, 1));
 %! assert (isequal (mc, mo));
 %! assert (isequal (ic.rmse, io.rmse));
+
+%!test
+%! ## pov_knots (private) on one table: the entries with the oct-file
+%! ## __pov_knots__ and with the Octave code are the same, on smooth, sharp,
+%! ## tied (flat and repeated columns), masked and NaN tables
+%! here = pwd ();
+%! state = rand ("state");
+%! unwind_protect
+%!   cd (fullfile (fileparts (which ("lafortune_eval")), "private"));
+%!   rand ("state", 3);
+%!   x = sort ([0; rand(298, 1); 1]) * pi / 2;
+%!   c = cos (x);
+%!   sharp = exp (-((x - 0.3) / 0.01) .^ 2) + 0.01 * x;
+%!   bumps = exp (-((x - [0.2 0.9 1.3]) / 0.05) .^ 2);
+%!   flat = ones (300, 4);
+%!   kinks = repmat (abs (x - 0.7), 1, 3);
+%!   noisy = [rand(300, 2), (x > 1) .* 5];
+%!   cases = {sharp, [x.^3, bumps], flat, kinks, noisy};
+%!   some = rand (300, 1) > 0.3;
+%!   masks = {true, some, (x > 0.2 & x < 1.2)};
+%!   n = 0;
+%!   for i = 1:numel (cases)
+%!     for j = 1:numel (masks)
+%!       for tol = [1e-4 1e-2]
+%!         for nmax = [8 40 256]
+%!           G = cases{i};
+%!           if (i == 5 && j == 2)
+%!             G(17, 1) = NaN;
+%!           endif
+%!           M = masks{j} & true (size (G));
+%!           k1 = pov_knots (x, G, c, M, tol, nmax, "adaptive");
+%!           k0 = __octave_engine (@() pov_knots (x, G, c, M, tol, nmax, "adaptive"));
+%!           assert (isequal (k1, k0), sprintf ("case %d, mask %d, tol %g, nmax %d", i, j, tol, nmax));
+%!           n += nnz (k1);
+%!         endfor
+%!       endfor
+%!     endfor
+%!   endfor
+%!   assert (n > 1000);
+%! unwind_protect_cleanup
+%!   cd (here);
+%!   rand ("state", state);
+%! end_unwind_protect
+
+%!test
+%! ## whole POV-Ray scene files, with and without the oct-files: the same
+%! ## bytes (a fit and a measured material's tables)
+%! sc = scene_make ("sphere", "size", [32 16], "spp", 1);
+%! m = struct ("rho_d", [0.05 0.1 0.2], "Cxy", [-1 -0.5 -0.7; -0.9 -0.6 -0.7],
+%!             "Cz", [1 0.6 0.8; 0.9 0.5 0.7], "e", [400 30 5e3; 20 35 40]);
+%! rp = merl_standin ("red-plastic");
+%! for mat = {m, rp}
+%!   f1 = [tempname() ".pov"];
+%!   f0 = [tempname() ".pov"];
+%!   unwind_protect
+%!     pov_write_scene (sc, mat{1}, f1);
+%!     __octave_engine (@() pov_write_scene (sc, mat{1}, f0));
+%!     assert (isequal (fileread (f1), fileread (f0)));
+%!   unwind_protect_cleanup
+%!     for f = {f1, f0}
+%!       if (exist (f{1}, "file"))
+%!         unlink (f{1});
+%!       endif
+%!     endfor
+%!   end_unwind_protect
+%! endfor
 
 %!test
 %! ## an oct-file that does not load (here a damaged one ahead on the path):

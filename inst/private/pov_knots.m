@@ -91,10 +91,16 @@ function K = uniform (x, first, last, ne)
 endfunction
 
 ## One table with many columns: one interval at a time, recomputing only the
-## two halves of the interval just split.
+## two halves of the interval just split.  The oct-file __pov_knots__ does
+## the same operations, compiled (this code is the reference; the tests
+## compare the two bit for bit); it is used when built.
 function K = greedy_one (x, G, W, M, tol, nmax, first, last, K)
   kn = find (K(:,1));
   kn = kn(kn >= first & kn <= last);
+  if (numel (kn) >= 2 && exist ("__pov_knots__", "file") == 3)
+    K(__pov_knots__ (x, G, W, M, tol, nmax, kn)) = true;
+    return;
+  endif
   e = a = zeros (numel (kn) - 1, 1);
   for j = 1:numel (kn) - 1
     [e(j), a(j)] = interval_err (x, G, W, M, kn(j), kn(j+1));
