@@ -100,18 +100,23 @@ pov_threads = $(if $(filter command line environment,$(origin POV_THREADS)),$(PO
 comma := ,
 octstep = POV_THREADS=$(pov_threads) $(call octrun,repro_step ("$(1)"$(comma) "$(2)"))
 
-# ---- which project files each step may call: build/deps.mk, made from the
-# code by scripts/repro_deps.m (like a compiler's -MM), so that a change to a
-# file under inst/ re-runs only the steps that may call it
-STEP_SCRIPTS := repro_fit repro_render_measured repro_render_fits repro_spp repro_study repro_figures \
-  repro_report db_sheet db_report
+# ---- the pipeline's files and steps, and which project files each step may
+# call: build/deps.mk, written by scripts/repro_deps.m from the one table of
+# them, scripts/repro_files.m (FILE_kind := pattern under the results folder,
+# % the material; REPRO_STEPS, DB_STEPS; SCRIPT_step, UP_step: the steps whose
+# records a step reads), and from the code (DEPS_script, like a compiler's
+# -MM), so that a change to a file under inst/ re-runs only the steps that
+# may call it.  Without it (the goals below need no step) no step rule exists.
 NO_STEP_GOALS := all deps check bench dist install clean distclean
 ifneq ($(filter-out $(NO_STEP_GOALS),$(MAKECMDGOALS)),)
 build/deps.mk: $(wildcard scripts/*.m inst/*.m inst/private/*.m src/*.cc) inst inst/private scripts
 	@mkdir -p build
-	@$(OCT) --path $(CURDIR)/scripts --eval 'repro_deps ("$@", "$(STEP_SCRIPTS)")'
+	@$(OCT) --path $(CURDIR)/scripts --eval 'repro_deps ("$@")'
 include build/deps.mk
 endif
+# FILE_$(1) of material $(2) under folder $(3); the records step $(1) reads
+file_of = $(3)/$(subst %,$(2),$(FILE_$(1)))
+ups_of = $(foreach u,$(UP_$(1)),$(call file_of,$(u),$(2),$(3)))
 
 .PHONY: FORCE
 FORCE:
@@ -122,43 +127,38 @@ R := $(RESULTS)
 
 reproduce: deps
 	@$(MAKE) --no-print-directory -C src
-	@$(MAKE) --no-print-directory -s $(R)/report.md $(R)/summary.json
-	@echo "reproduce: done: $(R)/report.md, $(R)/summary.json, figures in $(R)/figures"
+	@$(MAKE) --no-print-directory -s $(R)/$(FILE_report) $(R)/$(FILE_summary)
+	@echo "reproduce: done: $(R)/$(FILE_report), $(R)/$(FILE_summary), figures in $(dir $(R)/$(FILE_figures))"
 
-$(R)/settings.json: FORCE
+ifdef FILE_fit
+$(R)/$(FILE_settings): FORCE
 	@$(call octrun,repro_settings ())
 
-$(R)/data/%.binary: FORCE
+$(R)/$(FILE_data): FORCE
 	@$(call octrun,repro_data ("$*"))
 
-$(R)/fit/%.json: $(R)/data/%.binary $(R)/settings.json $(DEPS_repro_fit)
-	@$(call octstep,fit,$*)
-
-$(R)/render/%-measured.json: $(R)/data/%.binary $(R)/settings.json $(MESH) $(DEPS_repro_render_measured)
-	@$(call octstep,render_measured,$*)
-
-$(R)/render/%-fits.json: $(R)/fit/%.json $(R)/render/%-measured.json $(DEPS_repro_render_fits)
-	@$(call octstep,render_fits,$*)
-
-$(R)/spp/%.json: $(R)/render/%-measured.json $(DEPS_repro_spp)
-	@$(call octstep,spp,$*)
-
-$(R)/study/%.json: $(R)/render/%-fits.json $(DEPS_repro_study)
-	@$(call octstep,study,$*)
+# one pattern rule per step: a step that reads no record reads the data, the
+# settings and the mesh
+define repro_rule
+$(R)/$(FILE_$(1)): $(if $(UP_$(1)),$(call ups_of,$(1),%,$(R)),$(R)/$(FILE_data) $(R)/$(FILE_settings) $(MESH)) $$(DEPS_$(SCRIPT_$(1)))
+	@$$(call octstep,$(1),$$*)
+endef
+$(foreach s,$(REPRO_STEPS),$(eval $(call repro_rule,$(s))))
 
 # the study: STUDY=1, or auto without a MESH; with QUICK=1, STUDY_QUICK unless
 # STUDY is given on the command line (as repro_config reads them)
 STUDY_EFF := $(if $(filter command line environment,$(origin STUDY)),$(STUDY),$\
   $(if $(filter 1,$(QUICK)),$(STUDY_QUICK),$(STUDY)))
 STUDY_ON := $(if $(filter 1,$(STUDY_EFF)),1,$(if $(filter auto,$(STUDY_EFF)),$(if $(MESH),,1)))
-STEP_OUT := $(foreach m,$(MATS),$(R)/fit/$(m).json $(R)/render/$(m)-fits.json $(R)/spp/$(m).json \
-  $(if $(STUDY_ON),$(R)/study/$(m).json))
+STEP_OUT := $(foreach m,$(MATS),$(foreach s,$(filter-out $(if $(STUDY_ON),,study),$(REPRO_STEPS)),$\
+  $(call file_of,$(s),$(m),$(R))))
 
-$(R)/figures/spp.png: $(STEP_OUT) $(DEPS_repro_figures)
+$(R)/$(FILE_figures): $(STEP_OUT) $(DEPS_repro_figures)
 	@$(call octrun,repro_figures ())
 
-$(R)/report.md $(R)/summary.json &: $(R)/figures/spp.png $(STEP_OUT) $(DEPS_repro_report)
+$(R)/$(FILE_report) $(R)/$(FILE_summary) &: $(R)/$(FILE_figures) $(STEP_OUT) $(DEPS_repro_report)
 	@$(call octrun,repro_report ())
+endif
 
 # ---- make database: every *.binary in MERL_DIR, one target per material
 # (db-MATERIAL), so that `make -j N database` runs N materials at once; each
@@ -177,58 +177,60 @@ DB_DATA := $(abspath $(MERL_DIR))
 HOSTS ?=
 PARALLEL ?= parallel
 PARALLEL_OPTS ?=
-# the steps of one material: $(1) step, $(2) material
-dbstep = RESULTS=$(DB)/materials/$(2) DATA_DIR=$(DB_DATA) DATABASE=1 $(call octstep,$(1),$(2))
-dbdir = $(DB)/materials/$(1)
+# a material's folder; one step of a material: $(1) step, $(2) material
+dbdir = $(call file_of,db_material,$(1),$(DB))
+dbstep = RESULTS=$(call dbdir,$(2)) DATA_DIR=$(DB_DATA) DATABASE=1 $(call octstep,$(1),$(2))
+# the record of step $(1) of material $(2)
+dbrec = $(call file_of,$(1),$(2),$(call dbdir,$(2)))
 
-define db_material
-$(call dbdir,$(1))/fit/$(1).json: $(MERL_DIR)/$(1).binary $(DB)/settings.json $$(DEPS_repro_fit)
-	@$$(call dbstep,fit,$(1))
+# one rule per step and material: a step that reads no record reads the
+# material's MERL file, the settings and the mesh
+define db_step
+$(call dbrec,$(2),$(1)): $(if $(UP_$(2)),$(call ups_of,$(2),$(1),$(call dbdir,$(1))),$\
+  $(call file_of,merl,$(1),$(MERL_DIR)) $(DB)/$(FILE_settings) $(MESH)) $$(DEPS_$(SCRIPT_$(2)))
+	@$$(call dbstep,$(2),$(1))
 
-$(call dbdir,$(1))/render/$(1)-measured.json: $(MERL_DIR)/$(1).binary $(DB)/settings.json $(MESH) $$(DEPS_repro_render_measured)
-	@$$(call dbstep,render_measured,$(1))
-
-$(call dbdir,$(1))/render/$(1)-fits.json: $(call dbdir,$(1))/fit/$(1).json $(call dbdir,$(1))/render/$(1)-measured.json $$(DEPS_repro_render_fits)
-	@$$(call dbstep,render_fits,$(1))
-
-$(call dbdir,$(1))/sheet/$(1).json: $(call dbdir,$(1))/render/$(1)-fits.json $$(DEPS_db_sheet)
-	@$$(call dbstep,sheet,$(1))
-
-.PHONY: db-$(1)
-db-$(1): $(call dbdir,$(1))/sheet/$(1).json
 endef
+define db_material
+$(foreach s,$(DB_STEPS),$(call db_step,$(1),$(s)))
+.PHONY: db-$(1)
+db-$(1): $(call dbrec,$(lastword $(DB_STEPS)),$(1))
+endef
+ifdef FILE_fit
 $(foreach m,$(DB_MATS),$(eval $(call db_material,$(m))))
+endif
 
-DB_OUT := $(DB)/table.csv $(DB)/report.md $(DB)/summary.json $(DB)/gallery/index.html \
-  $(DB)/figures/psnr-lobes.png $(DB)/figures/flip-lobes.png
+DB_OUT := $(foreach k,table report summary gallery fig_psnr_lobes fig_flip_lobes,$(DB)/$(FILE_$(k)))
 
 .PHONY: database db-list
 database: deps
 	@test -n "$(DB_MATS)" || { echo "database: no *.binary file in MERL_DIR=$(MERL_DIR)" >&2; exit 1; }
 	@$(MAKE) --no-print-directory -C src
 ifneq ($(HOSTS),)
-	@$(MAKE) --no-print-directory -s $(DB)/settings.json
+	@$(MAKE) --no-print-directory -s $(DB)/$(FILE_settings)
 	$(PARALLEL) -q --sshloginfile $(HOSTS) --workdir $(CURDIR) --halt never $(PARALLEL_OPTS) \
 	  make --no-print-directory -s db-{} $(MAKEOVERRIDES) MERL_DIR=$(DB_DATA) DB=$(abspath $(DB)) \
 	  ::: $(DB_MATS) || true
 endif
 	@$(MAKE) --no-print-directory -s $(DB_OUT)
-	@echo "database: done: $(DB)/report.md, $(DB)/table.csv, $(DB)/gallery/index.html"
+	@echo "database: done: $(DB)/$(FILE_report), $(DB)/$(FILE_table), $(DB)/$(FILE_gallery)"
 
 # the materials, one per line (for job arrays)
 db-list:
 	@printf '%s\n' $(DB_MATS)
 
-$(DB)/settings.json: FORCE
+ifdef FILE_fit
+$(DB)/$(FILE_settings): FORCE
 	@RESULTS=$(DB) DATABASE=1 $(call octrun,repro_settings ())
 
 # rewritten only when the list of materials changes
-$(DB)/materials.txt: FORCE
+$(DB)/$(FILE_materials): FORCE
 	@mkdir -p $(DB) && printf '%s\n' $(DB_MATS) > $@.tmp && \
 	  if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv -f $@.tmp $@; fi
 
-$(DB_OUT) &: $(DB)/materials.txt $(foreach m,$(DB_MATS),$(call dbdir,$(m))/sheet/$(m).json) $(DEPS_db_report)
+$(DB_OUT) &: $(DB)/$(FILE_materials) $(foreach m,$(DB_MATS),$(call dbrec,$(lastword $(DB_STEPS)),$(m))) $(DEPS_db_report)
 	@RESULTS=$(DB) DATABASE=1 MATERIALS="$(DB_MATS)" $(call octrun,db_report ())
+endif
 
 .SECONDARY:
 .DELETE_ON_ERROR:

@@ -35,16 +35,17 @@
 function db_report ()
   c = repro_config ();
   mats = c.materials;
-  steps = {"fit", "render_measured", "render_fits", "sheet"};
+  S = repro_files ().steps;
+  steps = {S([S.database]).name};
   label = struct ("inplane", "in-plane (the paper's method)",
                   "hemisphere", "hemisphere (solid-angle weights)",
                   "scene", "scene (the recommended fit)");
   D = struct ("material", mats, "ok", false, "error", "", "rec", []);
   for i = 1:numel (mats)
-    root = fullfile (c.results, "materials", mats{i});
+    root = repro_files ("db_material", c.results, mats{i});
     rec = struct ();
     for s = steps
-      f = repro_step ("output", s{1}, mats{i}, root);
+      f = repro_files (s{1}, root, mats{i});
       if (! exist (f, "file"))
         rec.(s{1}) = struct ("status", "error", "error", ["no record " f], "time", NaN);
       else
@@ -150,13 +151,13 @@ function db_report ()
       rows{end+1} = csv_row (v);
     endif
   endfor
-  repro_save (fullfile (c.results, "table.csv"), [strjoin(rows, "\n") "\n"]);
+  repro_save (repro_files ("table", c.results, ""), [strjoin(rows, "\n") "\n"]);
 
   ## --- the plots: PSNR and FLIP against lobe count, every material
   plot_lobes_db (P, c, mats, label, "PSNR against the measured render (dB)", [],
-                 [], fullfile (c.results, "figures", "psnr-lobes.png"));
+                 [], repro_files ("fig_psnr_lobes", c.results, ""));
   plot_lobes_db (F, c, mats, label, "FLIP against the measured render (lower is better)", [0 1],
-                 c.fail_flip, fullfile (c.results, "figures", "flip-lobes.png"));
+                 c.fail_flip, repro_files ("fig_flip_lobes", c.results, ""));
 
   ## --- report.md
   L = {"# lafortune: the Lafortune model over a database of measured BRDFs", ""};
@@ -228,10 +229,10 @@ function db_report ()
     endfor
   endfor
   L{end+1} = "";
-  L{end+1} = "![PSNR against lobe count, every material](figures/psnr-lobes.png)";
+  L{end+1} = sprintf ("![PSNR against lobe count, every material](%s)", repro_files ("fig_psnr_lobes", "", ""));
   L{end+1} = "";
-  L{end+1} = sprintf ("![FLIP against lobe count, every material (dashed: FAIL_FLIP = %g)](figures/flip-lobes.png)",
-                      c.fail_flip);
+  L{end+1} = sprintf ("![FLIP against lobe count, every material (dashed: FAIL_FLIP = %g)](%s)",
+                      c.fail_flip, repro_files ("fig_flip_lobes", "", ""));
   L{end+1} = "";
 
   ## --- the published fit: Ngan et al.'s 1-lobe fits against the toolbox's
@@ -373,7 +374,7 @@ function db_report ()
           s = [s " " lobes_txt(X.(q{1}).(r{1}).(m{1})(i,:), fmt.(q{1})) " |"];
         endfor
       endfor
-      L{end+1} = [s sprintf(" [sheet](materials/%s/%s) |", mats{i}, D(i).rec.sheet.file)];
+      L{end+1} = [s sprintf(" [sheet](%s/%s) |", repro_files ("db_material", "", mats{i}), D(i).rec.sheet.file)];
     endfor
   endfor
   L{end+1} = "";
@@ -392,7 +393,7 @@ function db_report ()
     sm.stage_time.(s{1}) = t(:)';
   endfor
   L{end+1} = "";
-  repro_save (fullfile (c.results, "report.md"), strjoin (L, "\n"));
+  repro_save (repro_files ("report", c.results, ""), strjoin (L, "\n"));
   sm.psnr = P;
   sm.psnr_rt = Q;
   sm.flip = F;
@@ -406,10 +407,10 @@ function db_report ()
                         "lobes", c.lobes, "methods", {c.methods}, "quick", c.quick,
                         "fail_flip", c.fail_flip, "fail_flip_gain", c.fail_flip_gain,
                         "fail_flip_drop", c.fail_flip_drop);
-  repro_save (fullfile (c.results, "summary.json"), sm);
+  repro_save (repro_files ("summary", c.results, ""), sm);
   write_gallery (c, D, P, F, X.deltae.pov, label);
   printf ("database: %d materials (%d failed): %s\n", numel (mats), numel (bad),
-          fullfile (c.results, "report.md"));
+          repro_files ("report", c.results, ""));
 endfunction
 
 ## The baseline: the published 1-lobe fits (PUBLISHED, rendered by
@@ -729,11 +730,11 @@ function write_gallery (c, D, P, F, E, label)
                           lobes, lobes_txt (P.(m{1})(i,:)), lobes_txt (F.(m{1})(i,:), "%.3f"),
                           lobes_txt (E.(m{1})(i,:)));
     endfor
-    H{end+1} = sprintf ("<img src=\"../materials/%s/%s\" alt=\"%s\">", D(i).material,
+    H{end+1} = sprintf ("<img src=\"../%s/%s\" alt=\"%s\">", repro_files ("db_material", "", D(i).material),
                         D(i).rec.sheet.file, D(i).material);
   endfor
   H{end+1} = "</body></html>";
-  repro_save (fullfile (c.results, "gallery", "index.html"), [strjoin(H, "\n") "\n"]);
+  repro_save (repro_files ("gallery", c.results, ""), [strjoin(H, "\n") "\n"]);
 endfunction
 
 function s = html_escape (s)

@@ -19,9 +19,8 @@ function R = db_sheet (material)
   c = repro_config ();
   warning ("off", "Octave:gnuplot-graphics");
   graphics_toolkit ("gnuplot");
-  rd = fullfile (c.results, "render");
-  ref = exrread (fullfile (rd, [material "-measured-pov.exr"]));   # the fits' renderer: their PSNR's reference
-  fits = jsondecode (fileread (fullfile (rd, [material "-fits.json"])));
+  ref = exrread ([repro_files("measured_pov", c.results, material) ".exr"]);   # the fits' renderer: their PSNR's reference
+  fits = jsondecode (fileread (repro_files ("render_fits", c.results, material)));
   [rgb, stops] = img_tonemap (ref, "auto");
   ## the methods' rows, and the published fit's (one lobe) when it was rendered
   rows_ = c.methods;
@@ -53,7 +52,7 @@ function R = db_sheet (material)
       if (j == 0)
         show (rgb, "measured");
       else
-        img = exrread (fullfile (rd, sprintf ("%s-%s-%d.exr", material, mth, lobes{i}(j))));
+        img = exrread ([repro_files("fit_render", c.results, material, mth, lobes{i}(j)) ".exr"]);
         r = fits.(mth)(j);
         show (img_tonemap (img, stops), sprintf ("%s %d: %.1f dB, FLIP %.3f, dE %.1f", name, lobes{i}(j),
                                                   num (r, "psnr_pov"), num (r, "flip_pov"),
@@ -61,9 +60,9 @@ function R = db_sheet (material)
       endif
     endfor
   endfor
-  file = fullfile (c.results, "sheet", [material ".png"]);   # repro_print makes the folder
+  file = repro_files ("sheet_png", c.results, material);   # repro_print makes the folder
   repro_print (h, file, 72, "db_sheet");
-  R = struct ("file", fullfile ("sheet", [material ".png"]), "exposure", stops);
+  R = struct ("file", repro_files ("sheet_png", "", material), "exposure", stops);
 endfunction
 
 ## the number R.(F), NaN when the record lacks it or holds null (NaN, Inf)

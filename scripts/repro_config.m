@@ -29,7 +29,7 @@ function c = repro_config (file)
   endif
   v = read_config (file);
   c.results = env_or ("RESULTS", "results");
-  c.data_dir = env_or ("DATA_DIR", fullfile (c.results, "data"));
+  c.data_dir = env_or ("DATA_DIR", fileparts (repro_files ("data", c.results, "")));
   c.merl_dir = env_or ("MERL_DIR", "data/merl");
   c.quick = str2double (env_or ("QUICK", "0")) == 1;
   c.database = str2double (env_or ("DATABASE", "0")) == 1;

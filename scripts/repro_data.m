@@ -10,9 +10,9 @@
 ## @end deftypefn
 function repro_data (material)
   c = repro_config ();
-  out = fullfile (c.results, "data", [material ".binary"]);
-  src_file = fullfile (c.results, "data", [material ".source.json"]);
-  merl = fullfile (c.merl_dir, [material ".binary"]);
+  out = repro_files ("data", c.results, material);
+  src_file = repro_files ("source", c.results, material);
+  merl = repro_files ("merl", c.merl_dir, material);
   if (exist (merl, "file"))
     s = dir (merl);
     src = struct ("kind", "merl-file", "path", make_absolute_filename (merl),

@@ -28,7 +28,7 @@
 ## @end deftypefn
 function repro_figures ()
   c = repro_config ();
-  fd = fullfile (c.results, "figures");
+  fd = fileparts (repro_files ("figures", c.results, ""));
   if (! isfolder (fd))
     mkdir (fd);
   endif
@@ -40,33 +40,31 @@ function repro_figures ()
     mat = c.materials{i};
     printf ("reproduce: [%s] figures\n", mat);
     fflush (stdout);
-    b = merl_read (fullfile (c.results, "data", [mat ".binary"]));
+    b = merl_read (repro_files ("merl", c.data_dir, mat));
     models = cell (1, nl);
     for j = 1:nl
-      models{j} = lafortune_import (fullfile (c.results, "fit",
-                                              sprintf ("%s-inplane-%d.json", mat, c.lobes(j))));
+      models{j} = lafortune_import ([repro_files("model", c.results, mat, "inplane", c.lobes(j)) ".json"]);
     endfor
     ## Fig. 2 / 3
     done (plot_plane (b, models, "theta_i", 30, "max_angle", c.max_angle,
                       "names", strcat (lobe_names, " fit"), "title", mat,
-                      "file", fullfile (fd, ["plane-" mat ".png"])));
+                      "file", repro_files ("fig_plane", c.results, mat)));
     ## BRDF Explorer's view and MERL's
     done (plot_polar ({b, models{end}}, [15 30 45 60], "scale", "log",
                       "names", {[mat ", measured"], sprintf("%s fit (in-plane)", lobe_names{end})},
-                      "file", fullfile (fd, ["polar-" mat ".png"])));
+                      "file", repro_files ("fig_polar", c.results, mat)));
     done (plot_slice ([{b}, models], 90, "names", [{"measured"}, strcat(lobe_names, " fit")],
-                      "file", fullfile (fd, ["slice-" mat ".png"])));
+                      "file", repro_files ("fig_slice", c.results, mat)));
     ## Fig. 4 / 5: in-plane fits (the paper's method) and hemisphere fits
-    rd = fullfile (c.results, "render");
-    ref = exrread (fullfile (rd, [mat "-measured-pov.exr"]));   # the fits' renderer and samples
-    F = jsondecode (fileread (fullfile (rd, [mat "-fits.json"])));
+    ref = exrread ([repro_files("measured_pov", c.results, mat) ".exr"]);   # the fits' renderer and samples
+    F = jsondecode (fileread (repro_files ("render_fits", c.results, mat)));
     mths = c.methods;
     nm = numel (mths);
     imgs = repmat ({ref}, nm, 1);
     psnr = zeros (nm, nl);
     for r = 1:nm
       for j = 1:nl
-        imgs{r,j+1} = exrread (fullfile (rd, sprintf ("%s-%s-%d.exr", mat, mths{r}, c.lobes(j))));
+        imgs{r,j+1} = exrread ([repro_files("fit_render", c.results, mat, mths{r}, c.lobes(j)) ".exr"]);
         psnr(r,j) = F.(mths{r})(j).psnr_pov;
       endfor
     endfor
@@ -79,8 +77,8 @@ function repro_figures ()
                         "width", min (256, max (180, columns (ref))),   # the paper's 256: 1:1
                         "title", sprintf ("%s: POV-Ray, %d x %d, anti-aliasing %d x %d",
                                           mat, columns (ref), rows (ref), c.pov_aa, c.pov_aa),
-                        "file", fullfile (fd, ["renders-" mat ".png"])));
-    Fi = jsondecode (fileread (fullfile (c.results, "fit", [mat ".json"])));
+                        "file", repro_files ("fig_renders", c.results, mat)));
+    Fi = jsondecode (fileread (repro_files ("fit", c.results, mat)));
     ## the step's record: trace(ch).time, .rmse per channel
     tr = Fi.inplane.trace;
     fits{i} = struct ("trace", {arrayfun(@(t) [t.time(:), t.rmse(:)], tr(:)', "uniformoutput", false)},
@@ -89,13 +87,13 @@ function repro_figures ()
   ## fit error against run time
   done (plot_trace (fits, "names", c.materials,
                     "title", sprintf ("In-plane fits, 1 to %d lobes: error against run time", max (c.lobes)),
-                    "file", fullfile (fd, "fit-trace.png")));
+                    "file", repro_files ("fig_trace", c.results, "")));
   ## render PSNR against run time
-  spp_figure (c, fullfile (fd, "spp.png"));
+  spp_figure (c, repro_files ("figures", c.results, ""));
   if (c.study)
     for i = 1:numel (c.materials)
-      study_figure (c, c.materials{i}, fullfile (fd, ["study-" c.materials{i} ".png"]), "psnr_a");
-      study_figure (c, c.materials{i}, fullfile (fd, ["study-flip-" c.materials{i} ".png"]), "flip_a");
+      study_figure (c, c.materials{i}, repro_files ("fig_study", c.results, c.materials{i}), "psnr_a");
+      study_figure (c, c.materials{i}, repro_files ("fig_study_flip", c.results, c.materials{i}), "flip_a");
     endfor
   endif
 endfunction
@@ -103,7 +101,7 @@ endfunction
 ## the study: PSNR (Q "psnr_a") or FLIP ("flip_a") against lobes, one panel
 ## per table, one line per weighting
 function study_figure (c, mat, file, q)
-  R = jsondecode (fileread (fullfile (c.results, "study", [mat ".json"])));
+  R = jsondecode (fileread (repro_files ("study", c.results, mat)));
   M = R.methods;
   tables = unique ({M.table}, "stable");
   weights = unique ({M.weight}, "stable");
@@ -147,7 +145,7 @@ function spp_figure (c, file)
   h = figure ("visible", vis, "position", [40 40 W 420], "color", "w");
   for i = 1:n
     mat = c.materials{i};
-    P = jsondecode (fileread (fullfile (c.results, "spp", [mat ".json"])));
+    P = jsondecode (fileread (repro_files ("spp", c.results, mat)));
     ax = axes ("parent", h, "position", [(80 + (i - 1) * 460) / W, 60 / 420, 400 / W, 310 / 420]);
     semilogx (ax, P.time, P.psnr, "-o", "linewidth", 1.5);
     for j = 1:numel (P.spp)

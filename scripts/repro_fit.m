@@ -27,14 +27,10 @@
 function R = repro_fit (material)
   c = repro_config ();
   warning ("off", "lafortune:notConverged");
-  b = merl_read (fullfile (c.data_dir, [material ".binary"]));
+  b = merl_read (repro_files ("merl", c.data_dir, material));
   for method = c.methods
     [S.(method{1}), O.(method{1})] = repro_table (b, method{1}, c, c.hemi_samples);   # (an unknown name is an error there)
   endfor
-  outdir = fullfile (c.results, "fit");
-  if (! isfolder (outdir))
-    mkdir (outdir);
-  endif
   R = struct ("material", material, "lobes", c.lobes);
   for method = c.methods
     mth = method{1};
@@ -48,7 +44,10 @@ function R = repro_fit (material)
     for k = c.lobes
       m = models{k};
       m.name = sprintf ("%s, %d lobe(s), %s fit", material, k, mth);
-      base = fullfile (outdir, sprintf ("%s-%s-%d", material, mth, k));
+      base = repro_files ("model", c.results, material, mth, k);
+      if (! isfolder (fileparts (base)))
+        mkdir (fileparts (base));
+      endif
       lafortune_export (m, [base ".json"], "json");
       lafortune_export (m, [base ".txt"], "text");
       lafortune_export (m, [base ".brdf"], "brdfexplorer");

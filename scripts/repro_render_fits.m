@@ -31,14 +31,13 @@
 function R = repro_render_fits (material)
   c = repro_config ();
   scene = repro_scene (c);
-  rd = fullfile (c.results, "render");
-  ref = exrread (fullfile (rd, [material "-measured.exr"]));         # rt_render
-  refpov = exrread (fullfile (rd, [material "-measured-pov.exr"]));  # POV-Ray
+  ref = exrread ([repro_files("measured", c.results, material) ".exr"]);         # rt_render
+  refpov = exrread ([repro_files("measured_pov", c.results, material) ".exr"]);  # POV-Ray
   R = struct ("material", material, "antialias", c.pov_aa);
   models = struct ();
   for method = c.methods
     for k = c.lobes
-      models.(method{1}){k} = lafortune_import (fullfile (c.results, "fit", sprintf ("%s-%s-%d.json", material, method{1}, k)));
+      models.(method{1}){k} = lafortune_import ([repro_files("model", c.results, material, method{1}, k) ".json"]);
     endfor
   endfor
   ## the published fit of the material (make database, PUBLISHED), as a
@@ -58,7 +57,7 @@ function R = repro_render_fits (material)
       printf ("reproduce: [%s] POV-Ray render, %s fit, %d lobe(s)\n", material, mth, k);
       fflush (stdout);
       [img, pinfo] = pov_render (scene, m, "antialias", c.pov_aa, "threads", c.pov_threads);
-      base = fullfile (rd, sprintf ("%s-%s-%d", material, mth, k));
+      base = repro_files ("fit_render", c.results, material, mth, k);
       exrwrite ([base ".exr"], img);
       img_write_png ([base ".png"], img, "auto");
       ## the same model through the Octave raytracer, with the measured

@@ -15,18 +15,18 @@
 ## @end deftypefn
 function R = repro_render_measured (material)
   c = repro_config ();
-  b = merl_read (fullfile (c.data_dir, [material ".binary"]));
+  b = merl_read (repro_files ("merl", c.data_dir, material));
   scene = repro_scene (c);
   printf ("reproduce: [%s] rendering the measured data (rt_render, %d x %d, %d spp)\n",
           material, scene.width, scene.height, scene.spp);
   fflush (stdout);
   [img, info] = rt_render (scene, b, "progress", true);
-  outdir = fullfile (c.results, "render");
+  outdir = fileparts (repro_files ("measured", c.results, material));
   if (! isfolder (outdir))
     mkdir (outdir);
   endif
-  exrwrite (fullfile (outdir, [material "-measured.exr"]), img);
-  img_write_png (fullfile (outdir, [material "-measured.png"]), img, "auto");
+  exrwrite ([repro_files("measured", c.results, material) ".exr"], img);
+  img_write_png ([repro_files("measured", c.results, material) ".png"], img, "auto");
   ## the measured data through POV-Ray as well, with the fits' samples: the
   ## fits' POV-Ray renders are compared with it, so that both sides of each
   ## PSNR see the same sample positions (on a mesh whose triangles are
@@ -35,7 +35,7 @@ function R = repro_render_measured (material)
           material, c.pov_aa);
   fflush (stdout);
   [pimg, pinfo] = pov_render (scene, b, "antialias", c.pov_aa, "threads", c.pov_threads);
-  exrwrite (fullfile (outdir, [material "-measured-pov.exr"]), pimg);
+  exrwrite ([repro_files("measured_pov", c.results, material) ".exr"], pimg);
   R = struct ("material", material, "scene", scene.name, "width", scene.width,
               "height", scene.height, "spp", scene.spp, "info", clean_info (info),
               "pov_time", pinfo.time + pinfo.write_time, "pov_scene_bytes", pinfo.bytes,

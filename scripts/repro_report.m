@@ -20,7 +20,7 @@ function repro_report ()
   sm.data = struct ();
   for i = 1:numel (c.materials)
     mat = c.materials{i};
-    src = jsondecode (fileread (fullfile (c.results, "data", [mat ".source.json"])));
+    src = jsondecode (fileread (repro_files ("source", c.results, mat)));
     if (strcmp (src.kind, "merl-file"))
       tag = ["h" src.sha256(1:min (8, end))];
       what = "a MERL-format file of unknown origin";
@@ -66,10 +66,10 @@ function repro_report ()
   sm.materials = struct ();
   for i = 1:numel (c.materials)
     mat = c.materials{i};
-    R = jsondecode (fileread (fullfile (c.results, "render", [mat "-fits.json"])));
-    F = jsondecode (fileread (fullfile (c.results, "fit", [mat ".json"])));
-    P = jsondecode (fileread (fullfile (c.results, "spp", [mat ".json"])));
-    M = jsondecode (fileread (fullfile (c.results, "render", [mat "-measured.json"])));
+    R = jsondecode (fileread (repro_files ("render_fits", c.results, mat)));
+    F = jsondecode (fileread (repro_files ("fit", c.results, mat)));
+    P = jsondecode (fileread (repro_files ("spp", c.results, mat)));
+    M = jsondecode (fileread (repro_files ("render_measured", c.results, mat)));
     paper = repro_paper (c, mat);
     for j = 1:numel (c.lobes)
       k = c.lobes(j);
@@ -168,7 +168,7 @@ function repro_report ()
     mat = c.materials{i};
     for k = c.lobes
       L{end+1} = "```";
-      L{end+1} = strtrim (fileread (fullfile (c.results, "fit", sprintf ("%s-inplane-%d.txt", mat, k))));
+      L{end+1} = strtrim (fileread ([repro_files("model", c.results, mat, "inplane", k) ".txt"]));
       L{end+1} = "```";
     endfor
   endfor
@@ -229,13 +229,13 @@ function repro_report ()
   endfor
   L{end+1} = "";
   txt = strjoin (L, "\n");
-  repro_save (fullfile (c.results, "report.md"), [txt "\n"]);
+  repro_save (repro_files ("report", c.results, ""), [txt "\n"]);
   sm.settings = struct ("scene", scene.name, "width", scene.width, "height", scene.height,
                         "spp", scene.spp, "pov_antialias", c.pov_aa, "max_angle", c.max_angle,
                         "quick", c.quick);
-  repro_save (fullfile (c.results, "summary.json"), sm);
-  printf ("reproduce: wrote %s and %s\n", fullfile (c.results, "report.md"),
-          fullfile (c.results, "summary.json"));
+  repro_save (repro_files ("summary", c.results, ""), sm);
+  printf ("reproduce: wrote %s and %s\n", repro_files ("report", c.results, ""),
+          repro_files ("summary", c.results, ""));
 endfunction
 
 ## the paper's method is the report's first column and its reference
@@ -306,7 +306,7 @@ function L = study_section (c, L)
   L{end+1} = "";
   for i = 1:numel (c.materials)
     mat = c.materials{i};
-    R = jsondecode (fileread (fullfile (c.results, "study", [mat ".json"])));
+    R = jsondecode (fileread (repro_files ("study", c.results, mat)));
     nl = max (c.lobes);
     hdr = "| table | weighting |";
     for k = 1:nl

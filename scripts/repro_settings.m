@@ -14,7 +14,7 @@ function repro_settings ()
   ## nor POV-Ray's thread count, which does not change the images
   s = rmfield (c, {"results", "data_dir", "merl_dir", "materials", "database", "pov_threads"});
   txt = jsonencode (s);
-  f = fullfile (c.results, "settings.json");
+  f = repro_files ("settings", c.results, "");
   if (exist (f, "file") && strcmp (fileread (f), txt))
     return;
   endif

@@ -11,9 +11,9 @@
 ## @end deftypefn
 function R = repro_spp (material)
   c = repro_config ();
-  b = merl_read (fullfile (c.data_dir, [material ".binary"]));
-  ref = exrread (fullfile (c.results, "render", [material "-measured.exr"]));
-  mj = jsondecode (fileread (fullfile (c.results, "render", [material "-measured.json"])));
+  b = merl_read (repro_files ("merl", c.data_dir, material));
+  ref = exrread ([repro_files("measured", c.results, material) ".exr"]);
+  mj = jsondecode (fileread (repro_files ("render_measured", c.results, material)));
   scene = repro_scene (c);
   R = struct ("material", material, "reference_spp", scene.spp,
               "reference_time", mj.info.time_total, "spp", c.spp_study,

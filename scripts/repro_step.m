@@ -3,15 +3,15 @@
 
 ## -*- texinfo -*-
 ## @deftypefn  {} {} repro_step (@var{step}, @var{material})
-## @deftypefnx {} {@var{file} =} repro_step ("output", @var{step}, @var{material})
-## @deftypefnx {} {@var{file} =} repro_step ("output", @var{step}, @var{material}, @var{root})
 ## Run one per-material step of `make reproduce` / `make database` and write
-## its record, RESULTS/STEPDIR/MATERIAL*.json, atomically (the Make target).
+## its record atomically (the Make target; file names and the steps'
+## order: repro_files).
 ##
 ## Steps: @code{fit} (repro_fit), @code{render_measured}
 ## (repro_render_measured), @code{render_fits} (repro_render_fits),
 ## @code{spp} (repro_spp), @code{study} (repro_study) and @code{sheet}
-## (db_sheet).  Every record has the
+## (db_sheet); a step reads the records of the steps it follows
+## (repro_files's @code{up}) and fails when one of them failed.  Every record has the
 ## same head, then the step's own fields:
 ##
 ## @example
@@ -25,34 +25,21 @@
 ## materials go on and a rerun does not retry an unchanged input; otherwise
 ## the error stops the run.
 ## @end deftypefn
-function out = repro_step (step, material, varargin)
-  if (strcmp (step, "output"))
-    if (nargin > 3)
-      root = varargin{2};                 # a material's folder of make database
-    else
-      root = repro_config ().results;
-    endif
-    out = output_file (root, material, varargin{1});
-    return;
-  endif
+function repro_step (step, material)
   c = repro_config ();
-  steps = struct ("fit", {{"repro_fit", {}}},
-                  "render_measured", {{"repro_render_measured", {}}},
-                  "render_fits", {{"repro_render_fits", {"fit", "render_measured"}}},
-                  "spp", {{"repro_spp", {"render_measured"}}},
-                  "study", {{"repro_study", {"render_measured", "render_fits"}}},
-                  "sheet", {{"db_sheet", {"fit", "render_measured", "render_fits"}}});
-  if (! isfield (steps, step))
+  S = repro_files ().steps;
+  k = find (strcmp ({S.name}, step));
+  if (isempty (k))
     error ("lafortune:badStep", "repro_step: unknown step '%s': expected one of %s",
-           step, strjoin (fieldnames (steps)', ", "));
+           step, strjoin ({S.name}, ", "));
   endif
-  fn = steps.(step){1};
-  up = steps.(step){2};
-  rec = output_file (c.results, step, material);
+  fn = S(k).script;
+  up = S(k).up;
+  rec = repro_files (step, c.results, material);
   t0 = tic ();
   try
     for i = 1:numel (up)
-      f = output_file (c.results, up{i}, material);
+      f = repro_files (up{i}, c.results, material);
       if (! exist (f, "file"))
         error ("lafortune:upstreamFailed", "the %s step has no record %s", up{i}, f);
       endif
@@ -81,23 +68,4 @@ function out = repro_step (step, material, varargin)
     printf ("database: [%s] %s: FAILED: %s\n", material, step, msg);
   end_try_catch
   repro_save (rec, R);
-endfunction
-
-function f = output_file (root, step, material)
-  switch (step)
-    case "fit"
-      f = fullfile (root, "fit", [material ".json"]);
-    case "render_measured"
-      f = fullfile (root, "render", [material "-measured.json"]);
-    case "render_fits"
-      f = fullfile (root, "render", [material "-fits.json"]);
-    case "spp"
-      f = fullfile (root, "spp", [material ".json"]);
-    case "study"
-      f = fullfile (root, "study", [material ".json"]);
-    case "sheet"
-      f = fullfile (root, "sheet", [material ".json"]);
-    otherwise
-      error ("lafortune:badStep", "repro_step: unknown step '%s'", step);
-  endswitch
 endfunction

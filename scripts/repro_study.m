@@ -31,12 +31,11 @@
 function R = repro_study (material)
   c = repro_config ();
   warning ("off", "lafortune:notConverged", "local");
-  b = merl_read (fullfile (c.data_dir, [material ".binary"]));
+  b = merl_read (repro_files ("merl", c.data_dir, material));
   sa = repro_scene (c);
   sb = sa;
   sb.light.direction = c.study_light(:)' / norm (c.study_light);
-  rd = fullfile (c.results, "render");
-  ref_a = exrread (fullfile (rd, [material "-measured-pov.exr"]));
+  ref_a = exrread ([repro_files("measured_pov", c.results, material) ".exr"]);
   printf ("reproduce: [%s] study: the measured data in the second scene (POV-Ray)\n", material);
   fflush (stdout);
   ref_b = pov_render (sb, b, "antialias", c.pov_aa, "threads", c.pov_threads);
@@ -62,11 +61,11 @@ function R = repro_study (material)
   seen = {};
   done = zeros (0, 4);                # [PSNR A, PSNR B, FLIP A, FLIP B] per model
   main = struct ();
-  F = jsondecode (fileread (fullfile (rd, [material "-fits.json"])));
-  Ff = jsondecode (fileread (fullfile (c.results, "fit", [material ".json"])));
+  F = jsondecode (fileread (repro_files ("render_fits", c.results, material)));
+  Ff = jsondecode (fileread (repro_files ("fit", c.results, material)));
   for m = c.methods
     for k = 1:numel (c.lobes)
-      f = fullfile (c.results, "fit", sprintf ("%s-%s-%d.json", material, m{1}, c.lobes(k)));
+      f = [repro_files("model", c.results, material, m{1}, c.lobes(k)) ".json"];
       if (isfield (F, m{1}) && exist (f, "file"))
         seen{end+1} = lafortune_import (f);
         done(end+1,:) = [F.(m{1})(k).psnr_pov, NaN, F.(m{1})(k).flip_pov, NaN];
