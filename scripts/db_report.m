@@ -117,11 +117,8 @@ function db_report ()
           e = r.errors.(t{1});
           v = [v, {mean(e.rmse(k,:)), mean(e.log_rmse(k,:)), mean(e.cos_rmse(k,:))}];
         endfor
-        if (iscell (r.models))
-          md = r.models{k};
-        else
-          md = r.models(k);
-        endif
+        md = lafortune_import ([repro_files("model", repro_files ("db_material", c.results, mats{i}),
+                                            mats{i}, m{1}, k) ".json"]);
         v = [v, {max(r.lobe_time(k,:)), R.(m{1})(j).pov_time, D(i).rec.render_measured.info.time_total}, ...
              num2cell(md.rho_d(:)')];
         for l = 1:max (c.lobes)

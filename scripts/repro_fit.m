@@ -20,7 +20,8 @@
 ## @code{converged}, @code{lobe_time} (K x 3), @code{errors.TABLE.rmse},
 ## @code{rel_rmse}, @code{log_rmse}, @code{cos_rmse} (K x 3, of each model
 ## on each method's table; cos_rmse is weighted by cos theta_i as in Ngan et
-## al. 2005), @code{models} (struct array) and @code{trace} (3 x 1 struct
+## al. 2005; the models themselves are in their files, MATERIAL-METHOD-K.json)
+## and @code{trace} (3 x 1 struct
 ## array, one per channel: @code{channel}, @code{time}, @code{rmse}: the
 ## error of the best fit so far against run time).
 ## @end deftypefn
@@ -59,7 +60,6 @@ function R = repro_fit (material)
         r.errors.(t{1}).log_rmse(k,:) = e.log_rmse;
         r.errors.(t{1}).cos_rmse(k,:) = e.cos_rmse;
       endfor
-      r.models{k} = rmfield (m, "name");
     endfor
     ## the error-against-time traces, thinned for the record
     chn = "RGB";
