@@ -125,9 +125,12 @@ FORCE:
 MATS := $(MATERIALS)
 R := $(RESULTS)
 
+# the steps at once: JOBS (0: one per core), unless make was given a -j
+repro_jobs = $(if $(filter -j%,$(MAKEFLAGS)),,-j$(if $(filter 0,$(JOBS)),$(shell nproc 2>/dev/null || echo 1),$(JOBS)))
+
 reproduce: deps
 	@$(MAKE) --no-print-directory -C src
-	@$(MAKE) --no-print-directory -s $(R)/$(FILE_report) $(R)/$(FILE_summary)
+	@$(MAKE) --no-print-directory -s $(repro_jobs) $(R)/$(FILE_report) $(R)/$(FILE_summary)
 	@echo "reproduce: done: $(R)/$(FILE_report), $(R)/$(FILE_summary), figures in $(dir $(R)/$(FILE_figures))"
 
 ifdef FILE_fit

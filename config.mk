@@ -9,6 +9,9 @@
 
 # materials of `make reproduce` (`make database` takes every *.binary in MERL_DIR)
 MATERIALS ?= green-metallic-paint red-plastic
+# `make reproduce`: steps run at once (make -j), 0 = one per core; a -j of
+# your own (make -j N reproduce) takes precedence
+JOBS ?= 0
 # fit methods: inplane = the paper's (plane of incidence), hemisphere = the
 # whole valid hemisphere (solid-angle weights), scene = the recommended fit for
 # the best picture (the angle pairs the scene's pixels see, image weights);
