@@ -341,9 +341,8 @@ function [Rm, sl] = slice_table (scene, material, n, V)
   sl = struct ("H", H, "T", T, "B", B, "nh", nh, "np", np);
 endfunction
 
-## Bilinear lookup of the slice table at unit normals N (m x 3).
-## the bilinear weights of the table's entries for hit normals N: what the
-## trace cache keeps of a hit (the same for every material)
+## The bilinear weights of the slice table's entries at unit normals N
+## (m x 3): what the trace cache keeps of a hit (the same for every material).
 function w = slice_weights (sl, N)
   th = acos (min (max (N * sl.H.', -1), 1));
   ps = atan2 (abs (N * sl.B.'), N * sl.T.');

@@ -4,7 +4,7 @@
 ## bench_database: `make database` end to end, before and after, in one run:
 ## this checkout and a base version (BENCH_BASE, default 910a12b, the last
 ## commit of 0.4.3, exported by git archive into a scratch folder and built
-## there), each with 1 and with 2 jobs on the same materials, into fresh
+## there), each with 1 job and with N jobs (N = the cores, at least 2) on the same materials, into fresh
 ## scratch folders.  Prints the wall time per run, seconds per material, the
 ## ratio base / this checkout, the time per material by stage (median over
 ## the materials, from the steps' records), and the extrapolation to 100
@@ -69,7 +69,11 @@ unwind_protect
     st = system (sprintf ("git -C '%s' archive '%s' | tar -x -C '%s' && make --no-print-directory -s -C '%s/src' > '%s/build.log' 2>&1",
                           top, base, bt, bt, scratch));
     if (st != 0)
-      error ("bench_database: cannot export and build %s (see %s/build.log)", base, scratch);
+      log = "";
+      if (exist (fullfile (scratch, "build.log"), "file"))
+        log = fileread (fullfile (scratch, "build.log"));
+      endif
+      error ("bench_database: cannot export and build %s: %s", base, log);
     endif
     V(2) = struct ("name", sprintf ("base %s", base), "top", bt);
   endif

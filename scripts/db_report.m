@@ -40,9 +40,10 @@ function db_report ()
   label = struct ("inplane", "in-plane (the paper's method)",
                   "hemisphere", "hemisphere (solid-angle weights)",
                   "scene", "scene (the recommended fit)");
-  D = struct ("material", mats, "ok", false, "error", "", "rec", []);
+  D = struct ("material", mats, "ok", false, "error", "", "rec", [], "root", "");
   for i = 1:numel (mats)
     root = repro_files ("db_material", c.results, mats{i});
+    D(i).root = root;
     rec = struct ();
     for s = steps
       f = repro_files (s{1}, root, mats{i});
@@ -117,8 +118,7 @@ function db_report ()
           e = r.errors.(t{1});
           v = [v, {mean(e.rmse(k,:)), mean(e.log_rmse(k,:)), mean(e.cos_rmse(k,:))}];
         endfor
-        md = lafortune_import ([repro_files("model", repro_files ("db_material", c.results, mats{i}),
-                                            mats{i}, m{1}, k) ".json"]);
+        md = lafortune_import ([repro_files("model", D(i).root, mats{i}, m{1}, k) ".json"]);
         v = [v, {max(r.lobe_time(k,:)), R.(m{1})(j).pov_time, D(i).rec.render_measured.info.time_total}, ...
              num2cell(md.rho_d(:)')];
         for l = 1:max (c.lobes)

@@ -51,14 +51,12 @@ function repro_deps (file)
     L{end+1} = sprintf ("SCRIPT_%s := %s", s.name, s.script);
     L{end+1} = sprintf ("UP_%s := %s", s.name, strjoin (s.up, " "));
   endfor
-  ## the runner names every step in its table: it depends on what it calls
-  ## besides them
-  r = find (strcmp (names, "repro_step"));
-  uses{r} = setdiff (uses{r}, find (ismember (names, steps)));
-  ## so does the table of the steps and files (it names every script)
-  t = find (strcmp (names, "repro_files"));
-  uses{t} = setdiff (uses{t}, find (ismember (names, steps)));
-  runner = closure (r, uses);
+  ## the runner and the table of steps and files name every step's script:
+  ## they depend on what they call besides them
+  for t = find (ismember (names, {"repro_step", "repro_files"}))
+    uses{t} = setdiff (uses{t}, find (ismember (names, steps)));
+  endfor
+  runner = closure (find (strcmp (names, "repro_step")), uses);
   for s = steps
     k = find (strcmp (names, s{1}));
     if (isempty (k))

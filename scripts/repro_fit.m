@@ -32,6 +32,10 @@ function R = repro_fit (material)
   for method = c.methods
     [S.(method{1}), O.(method{1})] = repro_table (b, method{1}, c, c.hemi_samples);   # (an unknown name is an error there)
   endfor
+  outdir = fileparts (repro_files ("model", c.results, material, "", 1));
+  if (! isfolder (outdir))
+    mkdir (outdir);
+  endif
   R = struct ("material", material, "lobes", c.lobes);
   for method = c.methods
     mth = method{1};
@@ -46,9 +50,6 @@ function R = repro_fit (material)
       m = models{k};
       m.name = sprintf ("%s, %d lobe(s), %s fit", material, k, mth);
       base = repro_files ("model", c.results, material, mth, k);
-      if (! isfolder (fileparts (base)))
-        mkdir (fileparts (base));
-      endif
       lafortune_export (m, [base ".json"], "json");
       lafortune_export (m, [base ".txt"], "text");
       lafortune_export (m, [base ".brdf"], "brdfexplorer");

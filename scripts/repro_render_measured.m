@@ -21,12 +21,12 @@ function R = repro_render_measured (material)
           material, scene.width, scene.height, scene.spp);
   fflush (stdout);
   [img, info] = rt_render (scene, b, "progress", true);
-  outdir = fileparts (repro_files ("measured", c.results, material));
-  if (! isfolder (outdir))
-    mkdir (outdir);
+  base = repro_files ("measured", c.results, material);
+  if (! isfolder (fileparts (base)))
+    mkdir (fileparts (base));
   endif
-  exrwrite ([repro_files("measured", c.results, material) ".exr"], img);
-  img_write_png ([repro_files("measured", c.results, material) ".png"], img, "auto");
+  exrwrite ([base ".exr"], img);
+  img_write_png ([base ".png"], img, "auto");
   ## the measured data through POV-Ray as well, with the fits' samples: the
   ## fits' POV-Ray renders are compared with it, so that both sides of each
   ## PSNR see the same sample positions (on a mesh whose triangles are

@@ -44,6 +44,20 @@ function [r, t] = run_file (name, log)
   t = toc (t0);
 endfunction
 
+## add one file's counts R and time T to the totals, print its line
+function [passed, failed, skipped, bad] = tally (short, r, t, txt, passed, failed, skipped, bad)
+  nfail = r(2) - r(1) - r(3) - r(4) - r(5) - r(6);
+  passed += r(1);
+  failed += nfail;
+  skipped += r(5) + r(6);
+  printf ("%-4s %-22s %3d/%-3d %6.1f s\n", ifelse_str (nfail == 0, "ok", "FAIL"), short,
+          r(1), r(2), t);
+  fflush (stdout);
+  if (nfail > 0)
+    bad{end+1} = {short, txt};
+  endif
+endfunction
+
 function short = short_name (name)
   [~, short] = fileparts (name);
 endfunction
@@ -136,18 +150,6 @@ endif
 passed = failed = skipped = 0;
 bad = {};
 t_all = tic ();
-function [passed, failed, skipped, bad] = tally (short, r, t, txt, passed, failed, skipped, bad)
-  nfail = r(2) - r(1) - r(3) - r(4) - r(5) - r(6);
-  passed += r(1);
-  failed += nfail;
-  skipped += r(5) + r(6);
-  printf ("%-4s %-22s %3d/%-3d %6.1f s\n", ifelse_str (nfail == 0, "ok", "FAIL"), short,
-          r(1), r(2), t);
-  fflush (stdout);
-  if (nfail > 0)
-    bad{end+1} = {short, txt};
-  endif
-endfunction
 for k = find (! second)
   log = fullfile (scratch, sprintf ("test%03d.log", k));
   [r, t] = run_file (names{k}, log);

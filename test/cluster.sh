@@ -121,7 +121,7 @@ slurm_stop () {
   export SLURM_CONF="$d/slurm.conf"
   if [ -s "$d/run/slurmctld.pid" ] && [ -f "$SLURM_CONF" ]; then
     scancel --full --quiet --user="$(id -un)" 2>/dev/null
-    # the job steps of this cluster (slurmstepd runs under this cluster's spool folder)
+    # the cancelled jobs leave the queue (their slurmstepd end with them)
     wait_for "! squeue -h | grep -q ." 100
   fi
   stop_pid "$d/run/slurmd.pid"
