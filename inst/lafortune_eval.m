@@ -35,7 +35,7 @@ function f = lafortune_eval (model, wi, wo)
   if (nargin != 3)
     print_usage ();
   endif
-  model = check_model (model, "lafortune_eval");
+  model = check_model (model, "lafortune_eval", "lafortune");
   [wi, wo] = check_dirs (wi, wo, "lafortune_eval");
   sxy = wi(:,1) .* wo(:,1) + wi(:,2) .* wo(:,2);
   sz = wi(:,3) .* wo(:,3);

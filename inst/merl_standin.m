@@ -44,7 +44,8 @@ function brdf = merl_standin (name, varargin)
   endif
   opt = parse_opts (varargin, "merl_standin", struct ("noise", 0.03, "missing", 80, "seed", 1));
   p = P.(strrep (name, "-", "_"));
-  brdf = merl_synth (@(wi, wo) cook_torrance (p, wi, wo), "name", [name " (stand-in)"],
+  m = brdf_model ("cooktorrance", "rho_d", p.rho_d, "ks", p.rho_s, "m", p.m, "F0", p.F0);
+  brdf = merl_synth (m, "name", [name " (stand-in)"],
                      "noise", opt.noise, "missing", opt.missing, "seed", opt.seed);
 endfunction
 

@@ -3,12 +3,19 @@
 
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{kind} =} material_kind (@var{material})
-## "lafortune", "merl" or "" for anything else (private).
+## "lafortune" (a struct with Cxy and no type, or type "lafortune"),
+## "model" (another analytic type, see @code{model_def}), "merl" or "" for
+## anything else (private).
 ## @end deftypefn
 function kind = material_kind (material)
   kind = "";
   if (isstruct (material) && isscalar (material))
-    if (isfield (material, "Cxy"))
+    if (isfield (material, "type"))
+      kind = "model";
+      if (ischar (material.type) && strcmp (material.type, "lafortune"))
+        kind = "lafortune";
+      endif
+    elseif (isfield (material, "Cxy"))
       kind = "lafortune";
     elseif (isfield (material, "data") && isfield (material, "valid"))
       kind = "merl";
