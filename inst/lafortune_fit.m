@@ -218,12 +218,12 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
                             "screen_iter", 8, "screen_samples", 500, "reduce", "auto",
                             "start", [], "init", "grow", "jacobian", "analytic",
                             "bounds", true, "channels", 1:3, "color", []));
-  opt = table_defaults (opt, S);
+  opt = fit_defaults (opt, S);
   opt = check_opts (opt, nlobes);
   ## the table as lafortune_error checks it; with a scene table's prior,
   ## once more with the prior's rows
   [S, wt] = check_table (S, "lafortune_fit", 1);
-  [S, n0] = with_prior (S, opt.weight);
+  [S, n0] = fit_prior (S, opt.weight);
   if (n0 < rows (S.wi) || rows (S.wi) < 4)
     ## the prior's rows too; 4 samples at least, the prior's included
     [S, wt] = check_table (S, "lafortune_fit", 4);
@@ -235,8 +235,8 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
   ## the metrics as lafortune_error defines them (metric_spec), on the table
   ## as given (without a scene table's prior; rows 1..n0), in the data's
   ## units: what info reports
-  Srep = rows_of (S, (1:N)' <= n0);
-  [rep, names] = report_specs (Srep, opt.weight);
+  Srep = table_rows (S, (1:N)' <= n0);
+  [rep, names] = fit_specs (Srep, opt.weight);
   pall = rep.plain;                     # plain, on every row the fit sees
   if (n0 < N)
     pall = metric_spec ("plain", S, "lafortune_fit");
@@ -245,7 +245,7 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
   ## their largest magnitude per channel, so that nothing in the fit depends
   ## on the data's units
   keep = wt > 0;
-  Sf = rows_of (S, keep);
+  Sf = table_rows (S, keep);
   x = xall(keep,:);
   sc = max (abs (Sf.rgb), [], 1);
   shared = strcmp (opt.color, "shared");
@@ -327,22 +327,18 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
   ## the reported errors: lafortune_error's values (metric_spec's finish) of
   ## the models evaluated as it evaluates them (lafortune_eval: 0 on or below
   ## the horizon); a channel not fitted has the zero model
-  ss0 = arrayfun (@(c) rep.plain.ss (zeros (rows (Srep.wi), 1), c), 1:3);
-  ss = channel_ss (rep, names, lafortune_eval (model, Srep.wi, Srep.wo));
-  hss = nan (nlobes, 3);
-  hss(nlobes,:) = ss.plain;
+  Fk = {};
   if (grow)
-    for k = 1:nlobes-1
-      hss(k,:) = channel_ss (rep, {"plain"}, lafortune_eval (models{k}, Srep.wi, Srep.wo)).plain;
-    endfor
+    Fk = cellfun (@(m) lafortune_eval (m, Srep.wi, Srep.wo), models(1:nlobes-1), "uniformoutput", false);
   endif
   fitted = false (1, 3);
   fitted(opt.channels) = true;
-  info = report_errors (info, rep, ss, ss0, hss, fitted, opt.weight);
+  info = fit_errors (info, rep, names, lafortune_eval (model, Srep.wi, Srep.wo), Fk, fitted,
+                     opt.weight);
   ## (with a prior the trace's rows are on every fitted row: the last row is
   ## then the table's rmse)
   for c = opt.channels(:)'
-    info.trace{c} = best_trace (traces{c}, info.time(c), info.rmse(c),
+    info.trace{c} = fit_trace (traces{c}, info.time(c), info.rmse(c),
                                 strcmp (info_reduce, "exact") && n0 >= N);
   endfor
   if (! grow)
@@ -446,134 +442,12 @@ function info = channel_info (info, c, t, ch, nlobes, opt, warn = true)
   endif
 endfunction
 
-## INFO's errors from the 1 x 3 sums of squares SS.(metric) of the fit, SS0
-## (plain, of the zero model) and HSS (plain, per lobe count) with the specs
-## REP; channels not FITTED get NaN
-function info = report_errors (info, rep, ss, ss0, hss, fitted, weight)
-  per = @(e) ifelse_nan (e, fitted);
-  info.rmse = per (rep.plain.finish (ss.plain));
-  rms0 = rep.plain.finish (ss0);
-  info.rel_rmse = per (info.rmse ./ max (rms0, realmin) .* (info.rmse > 0));
-  info.log_rmse = per (rep.log.finish (ss.log));
-  if (isfield (rep, "cosine"))
-    info.cos_rmse = per (rep.cosine.finish (ss.cosine));
-  endif
-  if (strcmp (weight, "psnr"))
-    info.error = rep.psnr.finish (ss.psnr);
-  else
-    info.error = per (rep.(weight).finish (ss.(weight)));
-  endif
-  for k = 1:rows (hss)
-    info.history(k,:) = per (rep.plain.finish (hss(k,:)));
-  endfor
-endfunction
 
-## The 1 x 3 sums of squares SS.(name) of the model values F (N x 3) for
-## each metric of NAMES, with the specs REP
-function ss = channel_ss (rep, names, F)
-  for i = 1:numel (names)
-    ss.(names{i}) = arrayfun (@(c) rep.(names{i}).ss (F(:,c), c), 1:3);
-  endfor
-endfunction
 
-## E with NaN where FITTED is false (channels not fitted)
-function e = ifelse_nan (e, fitted)
-  e(! fitted) = NaN;
-endfunction
 
-## The specs of the reported metrics on the table S (data units): plain,
-## log, cosine (unless S.weight already is Ngan's cosine measure) and the
-## fit's own; NAMES lists them.  Delta is computed once.
-function [rep, names] = report_specs (S, weight)
-  rep.plain = metric_spec ("plain", S, "lafortune_fit");
-  names = {"plain", "log", weight};
-  if (! (isfield (S, "measure") && strcmp (S.measure, "cosine")))
-    names{end+1} = "cosine";
-  endif
-  names = unique (names);
-  for i = 1:numel (names)
-    if (! isfield (rep, names{i}))
-      rep.(names{i}) = metric_spec (names{i}, S, "lafortune_fit", rep.plain.delta);
-    endif
-  endfor
-endfunction
 
-## A scene table's prior (merl_scene's S.prior, a table of the material's
-## whole hemisphere, and S.prior_weight = r): appended to the table with
-## weights that sum to r times the table's own total weight in the fit's
-## metric (for "psnr" the weights times the irradiance squared; prior rows
-## get irradiance 1).  A single view (orthographic camera, directional
-## light) fixes gamma = angle (L, V), where a lobe's base is
-## Cxy cos gamma + (Cz - Cxy) uz vz: the scene's pixels determine only two
-## combinations of a lobe's three parameters, and the prior the third.
-function [S, n0] = with_prior (S, weight)
-  n0 = Inf;
-  if (! isstruct (S) || ! isscalar (S) || ! isfield (S, "prior") || isempty (S.prior))
-    return;
-  endif
-  P = S.prior;
-  r = S.prior_weight;
-  S = rmfield (S, {"prior", "prior_weight"});
-  if (! (isstruct (P) && all (isfield (P, {"wi", "wo", "rgb"})) && isnumeric (r) && isscalar (r)
-         && r >= 0 && isfinite (r)) || r == 0 || ! isfield (S, "weight"))
-    if (r != 0)
-      error ("lafortune:badSamples",
-             "lafortune_fit: S.prior must be a table (wi, wo, rgb) and S.prior_weight a finite scalar >= 0");
-    endif
-    return;
-  endif
-  w = S.weight(:);
-  if (strcmp (weight, "psnr"))
-    w = mean (metric_spec ("psnr", S, "lafortune_fit").w, 2);   # weight .* irradiance^2
-  endif
-  n0 = rows (S.wi);
-  wp = ones (rows (P.wi), 1);
-  if (isfield (P, "weight"))
-    wp = P.weight(:);
-  endif
-  wp *= r * sum (w) / max (sum (wp), realmin);
-  S.wi = [S.wi; P.wi];
-  S.wo = [S.wo; P.wo];
-  S.rgb = [S.rgb; P.rgb];
-  S.weight = [S.weight(:); wp];
-  if (isfield (S, "irradiance"))
-    S.irradiance = [S.irradiance; ones(rows (P.wi), columns (S.irradiance))];
-  endif
-endfunction
 
-## The rows K of the per-sample fields of the table S
-function S = rows_of (S, k)
-  if (all (k))
-    return;
-  endif
-  n = numel (k);
-  for f = {"wi", "wo", "rgb", "weight", "irradiance"}
-    if (isfield (S, f{1}) && rows (S.(f{1})) == n)
-      S.(f{1}) = S.(f{1})(k,:);
-    endif
-  endfor
-endfunction
 
-## The defaults that depend on the table: for a scene table (merl_scene,
-## S.kind "scene") the fit that looks best in the picture, as measured by
-## FLIP and CIEDE2000 on the 26 materials of ../shared (README, "Fits that
-## look right"); for any other table the paper's fit (plain weights, each
-## channel alone)
-function opt = table_defaults (opt, S)
-  scene = isstruct (S) && isscalar (S) && isfield (S, "kind") && ischar (S.kind) && strcmp (S.kind, "scene");
-  if (isempty (opt.weight))
-    opt.weight = merge (scene, "relative", "plain");
-  endif
-  if (isempty (opt.color))
-    opt.color = "separate";             # each channel alone, for every table
-  endif
-  if (isempty (opt.tries))
-    ## a picture's error has local minima (a highlight fitted by the wrong
-    ## lobe): for a scene table, and for the image's weights, every
-    ## direction family is screened
-    opt.tries = merge (scene || strcmp (opt.weight, "psnr"), Inf, 1);
-  endif
-endfunction
 
 function opt = check_opts (opt, nlobes)
   weights = metric_spec ();
@@ -610,7 +484,7 @@ function opt = check_opts (opt, nlobes)
            "lafortune_fit: REDUCE must be \"auto\", \"exact\" or a positive integer (grid cells per axis)");
   endif
   if (! isempty (opt.start))
-    opt.start = check_model (opt.start, "lafortune_fit");
+    opt.start = check_model (opt.start, "lafortune_fit", "lafortune");
     if (rows (opt.start.Cxy) != nlobes)
       error ("lafortune:badOption", "lafortune_fit: START has %d lobes, NLOBES is %d",
              rows (opt.start.Cxy), nlobes);
@@ -684,20 +558,6 @@ function R = coarse_data (D, jg, rep)
   R.yl = D.yl(rep);
 endfunction
 
-## [seconds, rmse of the best parameters so far (best in the fit's own
-## objective)] from rows [seconds, objective, rmse]; when the groups are grid
-## cells (EXACT false), a last row holds the fit's rmse on all samples
-function T = best_trace (R, t, err, exact)
-  if (isempty (R))
-    T = [t, err];
-    return;
-  endif
-  [~, best] = cummin (R(:,2));
-  T = [R(:,1), R(best,3)];
-  if (! exact)
-    T(end+1,:) = [max(t, T(end,1)), err];
-  endif
-endfunction
 
 function p = model_params (m, c)
   p = [m.rho_d(c); reshape([m.Cxy(:,c) m.Cz(:,c) m.e(:,c)].', [], 1)];

@@ -6,10 +6,18 @@
 ## The model's values (and Jacobian) at the groups of the fit's data @var{D}
 ## (private): one channel's Lafortune parameters (lafortune_core), or, when
 ## @code{D.nch} > 1 (fit_stack), lobes shared across the channels
-## (shared_lobes, reference channel @code{D.ref}), channel after channel.
+## (shared_lobes, reference channel @code{D.ref}), channel after channel;
+## with @code{D.def}, a physically based model's fit coordinates
+## (@code{fit_phys}).
 ## @end deftypefn
 function [f, J] = fit_eval (D, p)
-  if (D.nch == 1)
+  if (isfield (D, "def"))
+    if (nargout > 1)
+      [f, J] = fit_phys ("eval", D, p);
+    else
+      f = fit_phys ("eval", D, p);
+    endif
+  elseif (D.nch == 1)
     if (nargout > 1)
       [f, J] = lafortune_core (p, D.x(:,1), D.x(:,2));
     else

@@ -6,7 +6,8 @@
 ## One Levenberg-Marquardt run of leasqr on one channel's data @var{D}
 ## (from fit_data, or several channels' from fit_stack; private), from
 ## parameters @var{p0}, with the analytic Jacobian (or leasqr's dfdp),
-## bounds rho_d >= 0 and 0 <= e <= 1e7 (and shared lobes' amplitudes >= 0) when
+## bounds rho_d >= 0 and 0 <= e <= 1e7 (and shared lobes' amplitudes >= 0;
+## a physically based model's own, @code{fit_phys}) when
 ## @code{opt.bounds}, @code{opt.tol} and @code{opt.max_iter}.  When leasqr's
 ## handling of the bounds fails (its complementary pivoting can raise "not
 ## successful" on a degenerate step), the run is made without bounds and its
@@ -34,7 +35,9 @@ function [p, iter, cvg, T] = fit_lm (D, p0, opt, t0 = [])
   endif
   rec = fit_recorder (t0, ftol);
   F = @(xx, pp) model_fun (D, pp, rec);
-  if (D.nch == 1)
+  if (isfield (D, "def"))
+    [lb, ub] = fit_phys ("bounds", D, np);
+  elseif (D.nch == 1)
     lb = -Inf (np, 1); ub = Inf (np, 1);
     lb(1) = 0;
     lb(4:3:end) = 0; ub(4:3:end) = 1e7;

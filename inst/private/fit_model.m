@@ -1,0 +1,265 @@
+## Copyright (C) 2026 The lafortune developers
+## SPDX-License-Identifier: GPL-3.0-or-later
+## -*- texinfo -*-
+## @deftypefn {} {[@var{models}, @var{info}] =} fit_model (@var{S}, @var{wt}, @var{n0}, @var{def}, @var{nlobes}, @var{opt})
+## brdf_fit's engine for a physically based model (private).  @var{S} is
+## the checked table (with a scene table's prior appended after row
+## @var{n0}), @var{wt} its weights, @var{def} the type (model_def).
+## Returns the models of 1 .. @var{nlobes} lobes (data units) and
+## brdf_fit's @var{info}.
+##
+## The model sees a pair only through (cos theta_i, cos theta_o, wi.wo),
+## so samples equal in those are merged (fit_reduce, exact); samples on or
+## below the horizon, where every model is 0, and of weight 0 are left out.
+## The data are divided by their largest magnitude per channel (one for all
+## with "shared"): rho_d and ks scale with the data, the shape does not,
+## so the fit is scale invariant.  Lobes are added one at a time
+## (grow_lobe): every candidate shape of the type's grid gets its best
+## amplitude and change of rho_d by linear least squares, the best
+## @code{opt.tries} start a leasqr run each (fit_lm, in fit_phys's
+## coordinates), and the best accepted result that lowers the objective is
+## kept, so that the error never rises with more lobes.  A result larger
+## than 10 times the data's maximum on the guard set (the data's groups and
+## an in-plane grid up to the data's largest angle) is rejected.  With
+## @code{opt.energy}, a result whose albedo exceeds 1 is refitted by
+## @code{sqp} under the constraint (fit_energy).
+## @end deftypefn
+
+function [models, info] = fit_model (S, wt, n0, def, nlobes, opt)
+  fname = "brdf_fit";
+  N = rows (S.wi);
+  Srep = table_rows (S, (1:N)' <= n0);
+  [rep, names] = fit_specs (Srep, opt.weight);
+  pall = rep.plain;
+  if (n0 < N)
+    pall = metric_spec ("plain", S, fname);
+  endif
+  keep = wt > 0 & S.wi(:,3) > 0 & S.wo(:,3) > 0;
+  Sf = table_rows (S, keep);
+  X = [Sf.wi(:,3), Sf.wo(:,3), sum(Sf.wi .* Sf.wo, 2)];
+  sc = max (abs (Sf.rgb), [], 1);
+  shared = strcmp (opt.color, "shared");
+  if (shared)
+    sc(:) = max (sc(opt.channels));
+  endif
+  sc(! (sc > 0)) = 1;
+  Ss = Sf;
+  Ss.rgb = Sf.rgb ./ sc;
+  fspec = metric_spec (opt.weight, Ss, fname, pall.delta ./ sc);
+  pspec = pall;
+  pspec.w = pspec.w(keep,:);
+  pspec.ty = pspec.ty(keep,:);
+  [j, xc] = fit_reduce (X, wt(keep), Inf);
+  Xg = [xc; plane_grid(min ([X(:,1); X(:,2); 1]))];
+  nan3 = nan (1, 3);
+  info = struct ("type", def.type, "nlobes", nlobes, "weight", opt.weight, "color", opt.color,
+                 "n", rows (X), "groups", rows (xc), "reduce", "exact",
+                 "rmse", nan3, "rel_rmse", nan3, "log_rmse", nan3, "cos_rmse", nan3,
+                 "error", nan3, "iterations", zeros (1, 3), "full_iterations", zeros (1, 3),
+                 "rejected", zeros (1, 3), "converged", true (1, 3), "time", zeros (1, 3),
+                 "trace", {cell(1, 3)}, "history", nan (nlobes, 3),
+                 "lobe_time", nan (nlobes, 3), "albedo", zeros (1, 3), "energy", true (1, 3),
+                 "enforced", false (1, 3));
+  P0 = zeros (1 + nlobes * (1 + numel (def.shape)), 3);
+  Ps = repmat ({P0}, 1, nlobes);
+  for k = 1:nlobes
+    Ps{k} = P0(1:1 + k * (1 + numel (def.shape)),:);
+    Ps{k}(3 + (0:k-1) * (1 + numel (def.shape)),:) = def.lo(2);   # shape at its bound
+    if (numel (def.shape) > 1)
+      Ps{k}(4 + (0:k-1) * (1 + numel (def.shape)),:) = def.lo(3);
+    endif
+  endfor
+  Ds = cell (1, 3);
+  for c = opt.channels(:)'
+    y = Ss.rgb(:,c);
+    if (any (y < 0) && ! any (y > 0))
+      warning ("lafortune:negativeData",
+               "brdf_fit: channel %d has no positive value (a BRDF is non-negative); its fit is the zero model",
+               c);
+    endif
+    D = fit_data (fspec, c, j, xc, y);
+    D.s = sc(c);
+    D.same = strcmp (opt.weight, "plain");
+    if (! D.same)
+      D.P = fit_data (pspec, c, j, xc, Sf.rgb(:,c));
+    endif
+    Ds{c} = D;
+  endfor
+  if (shared)
+    blocks = {opt.channels(:)'};
+  else
+    blocks = num2cell (opt.channels(:)');
+  endif
+  traces = cell (1, 3);
+  for b = 1:numel (blocks)
+    B = blocks{b};
+    t0 = tic ();
+    if (numel (B) == 1)
+      D = Ds{B};
+    else
+      D = fit_stack (Ds(B), 1);
+      D.s = sc(B(1));
+    endif
+    D.def = def;
+    D.nch = numel (B);
+    D.Xg = Xg;
+    D.sc = sc(B);
+    run = grow (D, nlobes, opt, t0);
+    for k = 1:nlobes
+      P = fit_phys ("split", D, run.us{k});
+      amp = [1, 2 + (0:k-1) * (1 + numel (def.shape))];
+      P(amp,:) .*= sc(B);
+      Ps{k}(:,B) = P;
+    endfor
+    info.time(B) = toc (t0);
+    info.iterations(B) = run.iter;
+    info.full_iterations(B) = run.iter;
+    info.rejected(B) = run.rejected;
+    info.converged(B) = run.cvg;
+    info.enforced(B) = run.enforced;
+    info.lobe_time(:,B) = run.ktime(:) * ones (1, numel (B));
+    for i = 1:numel (B)
+      traces{B(i)} = run.trace(:,[1 2 2+i]);
+    endfor
+    if (! run.cvg)
+      warning ("lafortune:notConverged",
+               "brdf_fit: channel(s) %s (%d lobes) did not converge in %d iterations; the parameters are finite but may not be optimal",
+               mat2str (B), nlobes, opt.max_iter);
+    endif
+  endfor
+  models = cellfun (@(P) model_pack (P, def), Ps, "uniformoutput", false);
+  model = models{nlobes};
+  fitted = false (1, 3);
+  fitted(opt.channels) = true;
+  F = @(m) material_eval (m, Srep.wi, Srep.wo);
+  info = fit_errors (info, rep, names, F (model), cellfun (F, models(1:nlobes-1), "uniformoutput", false),
+                     fitted, opt.weight);
+  for c = opt.channels(:)'
+    info.trace{c} = fit_trace (traces{c}, info.time(c), info.rmse(c), n0 >= N);
+  endfor
+  A = brdf_albedo (model, fit_energy ());
+  info.albedo = max (A, [], 1);
+  info.energy = info.albedo <= 1;
+endfunction
+
+## The growing fit of the data D (one channel, or several sharing shapes)
+function run = grow (D, nlobes, opt, t0)
+  nch = D.nch;
+  G = rows (D.x);
+  wl2 = reshape (D.wl .^ 2, G, nch);
+  u = max (pi * sum (wl2 .* reshape (D.yl, G, nch), 1) ./ max (sum (wl2, 1), realmin), 0).';
+  [obj, e0] = fit_objective (D, fit_eval (D, u));
+  run = struct ("us", {cell(1, nlobes)}, "trace", [toc(t0), obj, e0], "iter", 0, "rejected", 0,
+                "cvg", true, "enforced", false, "ktime", nan (1, nlobes));
+  lm = struct ("tol", opt.tol, "max_iter", opt.max_iter, "bounds", true,
+               "jacobian", "analytic");
+  ns = numel (D.def.shape);
+  for k = 1:nlobes
+    ## a zero lobe keeps the k-1 lobe fit: the error never rises
+    z = [zeros(nch, 1); log_or_lin(D.def, D.def.starts, 1)];
+    best = struct ("u", [u; z], "obj", obj, "trace", zeros (0, 2 + nch), "cvg", true);
+    if (obj > 0)
+      starts = grow_starts (D, u, opt.tries);
+      for i = 1:columns (starts)
+        [uj, it, cv, T] = fit_lm (D, starts(:,i), lm, t0);
+        run.iter += it;
+        if (opt.energy)
+          [uj, enf] = fit_energy (D, uj);
+          run.enforced = run.enforced || enf;
+        endif
+        if (! guard_ok (D, uj))
+          run.rejected += 1;
+          continue;
+        endif
+        oj = fit_objective (D, fit_eval (D, uj));
+        if (oj < best.obj)
+          best = struct ("u", uj, "obj", oj, "trace", T, "cvg", cv);
+        endif
+      endfor
+    endif
+    u = best.u;
+    obj = best.obj;
+    run.cvg = best.cvg;
+    run.trace = [run.trace; best.trace];
+    run.us{k} = u;
+    run.ktime(k) = toc (t0);
+  endfor
+endfunction
+
+## The first value of each shape parameter's start grid, in fit coordinates
+function q = log_or_lin (def, starts, i)
+  q = cellfun (@(s) s(min (i, numel (s))), starts(:));
+  logs = strcmp (def.scale(:), "log");
+  q(logs) = log (q(logs));
+endfunction
+
+## Starts for one more lobe: every shape of the type's grid with its best
+## amplitude per channel and change of rho_d (linear least squares on the
+## linearised data, as fit_starts does for Lafortune lobes); the TRIES best
+function U = grow_starts (D, u, tries)
+  def = D.def;
+  nch = D.nch;
+  G = rows (D.x);
+  grid = def.starts;
+  [c{1:numel (grid)}] = ndgrid (grid{:});
+  Q = cell2mat (cellfun (@(x) x(:), c, "uniformoutput", false));
+  fcur = fit_eval (D, u);
+  rho = u(1:nch);
+  obj = inf (rows (Q), 1);
+  S = zeros (nch, rows (Q));
+  Dd = zeros (nch, rows (Q));
+  for i = 1:rows (Q)
+    g = def.lobe (D.x, Q(i,:));
+    if (! all (isfinite (g)) || ! any (g > 0))
+      continue;
+    endif
+    F = fcur;
+    for ch = 1:nch
+      r = (ch-1)*G+1:ch*G;
+      w = D.wl(r) .^ 2;
+      res = D.yl(r) - fcur(r);
+      S1 = sum (w); Sr = sum (w .* res); Sg = sum (w .* g); Sgg = sum (w .* g .^ 2);
+      Sgr = sum (w .* g .* res);
+      dt = S1 * Sgg - Sg ^ 2;
+      s = (S1 * Sgr - Sg * Sr) / dt;
+      d = (Sr - s * Sg) / S1;
+      if (! (dt > 0 && s > 0 && d >= -rho(ch) / pi))
+        s = max (Sgr / max (Sgg, realmin), 0);
+        d = 0;
+      endif
+      S(ch,i) = s;
+      Dd(ch,i) = d;
+      F(r) += d + s * g;
+    endfor
+    obj(i) = fit_objective (D, F);
+  endfor
+  ok = find (isfinite (obj) & any (S > 0, 1).');
+  [~, o] = sort (obj(ok));
+  ok = ok(o(1:min (tries, numel (o))));
+  U = zeros (numel (u) + nch + numel (def.shape), numel (ok));
+  logs = strcmp (def.scale, "log");
+  for i = 1:numel (ok)
+    q = Q(ok(i),:);
+    q(logs) = log (q(logs));
+    U(:,i) = [max(rho + pi * Dd(:,ok(i)), 0); u(nch+1:end); S(:,ok(i)); q(:)];
+  endfor
+endfunction
+
+## The fit's model at most 10 times the data's maximum on the guard set
+function ok = guard_ok (D, u)
+  P = fit_phys ("split", D, u);
+  ok = all (isfinite (u));
+  for c = 1:D.nch
+    g = model_core (D.def, P(:,c), D.Xg);
+    ok = ok && all (isfinite (g)) && max (g) <= 10 * max (D.ymax(c), realmin);
+  endfor
+endfunction
+
+## In-plane pairs at 0.5 degrees up to the data's largest angle, both sides
+function X = plane_grid (zmin)
+  amax = acosd (max (min (zmin, 1), 0));
+  t = linspace (0, amax, max (2, ceil (amax / 0.5) + 1));
+  [ti, to] = ndgrid (t, [-fliplr(t(2:end)), t]);
+  X = [cosd(ti(:)), cosd(to(:)), cosd(ti(:) + to(:))];
+  X = X(X(:,1) > 0 & X(:,2) > 0,:);
+endfunction
