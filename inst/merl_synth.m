@@ -7,8 +7,10 @@
 ## Build a MERL-format material from any BRDF function.
 ##
 ## @var{fun} is a function handle @code{rgb = fun (wi, wo)} taking N x 3 unit
-## directions (local frame, z = normal) and returning N x 3, or a Lafortune
-## model struct.  It is evaluated at every MERL bin's grid point
+## directions (local frame, z = normal) and returning N x 3, or an analytic
+## model struct of any type (a Lafortune model, or one of @code{brdf_model},
+## e.g. GGX), evaluated by @code{material_eval}.  It is evaluated at every
+## MERL bin's grid point
 ## (theta_h = (i/90)^2 pi/2, theta_d = j/90 pi/2, phi_d = k/180 pi).  Bins
 ## with a direction below the horizon hold 0.  Options:
 ##
@@ -35,20 +37,25 @@
 ##             "Cz", [1 1 1], "e", [50 50 50]);
 ## brdf = merl_synth (m, "name", "my-lobe", "noise", 0.05, "missing", 80);
 ## merl_write ([tempname() ".binary"], brdf);
+## g = brdf_model ("ggx", "rho_d", [0.1 0.05 0.02], "ks", 1, ...
+##                 "alpha", 0.2, "F0", 0.04);
+## brdf = merl_synth (g, "name", "ggx");
 ## @end group
 ## @end example
-## @seealso{merl_read, merl_write, merl_standin, lafortune_eval}
+## @seealso{merl_read, merl_write, merl_standin, brdf_model, material_eval}
 ## @end deftypefn
 function brdf = merl_synth (fun, varargin)
   if (nargin < 1)
     print_usage ();
   endif
   if (isstruct (fun))
+    ## any analytic model; material_eval evaluates a Lafortune one by
+    ## lafortune_eval, as ever
     model = check_model (fun, "merl_synth");
-    fun = @(wi, wo) lafortune_eval (model, wi, wo);
+    fun = @(wi, wo) material_eval (model, wi, wo);
   elseif (! is_function_handle (fun))
     error ("lafortune:badInput",
-           "merl_synth: FUN must be a function handle rgb = fun (wi, wo) or a Lafortune model struct");
+           "merl_synth: FUN must be a function handle rgb = fun (wi, wo) or an analytic model struct (see brdf_model)");
   endif
   opt = parse_opts (varargin, "merl_synth",
                     struct ("name", "synthetic", "noise", 0, "missing", [],
@@ -127,8 +134,40 @@ endfunction
 %! [~, ok] = merl_eval (b1, [0 0 1], [0 0 1]);
 %! assert (ok);
 
+%!test
+%! ## every analytic type, through material_eval (a Lafortune model exactly
+%! ## as lafortune_eval gives it), and read back by merl_eval
+%! wi = [sind(30) 0 cosd(30); sind(45) 0 cosd(45); sind(50) 0 cosd(50)];
+%! wo = [-sind(20) 0 cosd(20); -sind(45) 0 cosd(45); -sind(30) 0 cosd(30)];
+%! for t = brdf_model ()
+%!   d = brdf_model (t{1});
+%!   if (strcmp (t{1}, "lafortune"))
+%!     m = brdf_model ("lafortune", "rho_d", [0.3 0.2 0.1], "Cxy", [-1 -0.9 -1.1; 0.5 0.4 0.3], ...
+%!                     "Cz", [0.9 1 0.8; 0.5 0.6 0.7], "e", [20 30 40; 3 4 5]);
+%!   else
+%!     m = brdf_model (t{1}, "rho_d", [0.3 0.2 0.1], "ks", [1 0.5 0.25; 0.1 0.2 0.3], ...
+%!                     d.shape{1}, [0.3 0.4 0.5; 0.6 0.7 0.8] .^ (1 - 3 * (d.hi(2) > 100)));
+%!     if (numel (d.shape) > 1)
+%!       m.F0 = [0.04 0.5 1; 0.9 0.1 0];
+%!     endif
+%!   endif
+%!   b = merl_synth (m, "name", t{1});
+%!   assert (b.name, t{1});
+%!   assert (all (b.valid) && all (b.data(:) >= 0));
+%!   if (strcmp (t{1}, "lafortune"))
+%!     r = merl_synth (@(wi, wo) lafortune_eval (m, wi, wo));
+%!     assert (isequal (b.data, r.data));
+%!   elseif (strcmp (t{1}, "ggx"))
+%!     r = merl_synth (@(wi, wo) material_eval (m, wi, wo));
+%!     assert (isequal (b.data, r.data));
+%!   endif
+%!   assert (merl_eval (b, wi, wo), material_eval (m, wi, wo), -0.05);
+%! endfor
+
 %!error <Invalid call> merl_synth ()
 %!error id=lafortune:badInput merl_synth (42)
 %!error id=lafortune:badInput merl_synth (@(wi, wo) ones (rows (wi), 2))
 %!error id=lafortune:badOption merl_synth (@(wi, wo) wi, "noise", -1)
 %!error id=lafortune:badOption merl_synth (@(wi, wo) wi, "colour", 1)
+%!error id=lafortune:badModel merl_synth (struct ("type", "ggx", "rho_d", [0 0 0], "ks", 1, "alpha", 0.1, "F0", 0))
+%!error id=lafortune:badModelType merl_synth (struct ("type", "phong", "rho_d", [0 0 0]))
