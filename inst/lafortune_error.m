@@ -5,11 +5,13 @@
 ## @deftypefn  {lafortune} {@var{e} =} lafortune_error (@var{model}, @var{S})
 ## @deftypefnx {lafortune} {@var{e} =} lafortune_error (@var{model}, @var{S}, @var{metric})
 ## @deftypefnx {lafortune} {[@var{e}, @var{info}] =} lafortune_error (@dots{})
-## Error of a Lafortune model against a table of BRDF samples, by a named
+## Error of an analytic model against a table of BRDF samples, by a named
 ## metric: the one place where the toolbox's error metrics are defined (the
 ## fitter minimises the same sums).
 ##
-## @var{model} is a Lafortune model (see @code{lafortune_eval}); @var{S} a
+## @var{model} is an analytic model of any type (a Lafortune model, see
+## @code{lafortune_eval}, or another, see @code{brdf_model}), evaluated by
+## @code{material_eval}; @var{S} a
 ## table with fields @code{wi}, @code{wo} (N x 3 unit directions) and
 ## @code{rgb} (N x 3 reference values), such as @code{merl_plane},
 ## @code{merl_samples} or @code{merl_scene} return.  When @var{S} has a
@@ -87,7 +89,7 @@ function [e, info] = lafortune_error (model, S, metric = "plain")
   model = check_model (model, "lafortune_error");
   S = check_table (S, "lafortune_error", 1);
   spec = metric_spec (metric, S, "lafortune_error");
-  f = lafortune_eval (model, S.wi, S.wo);
+  f = material_eval (model, S.wi, S.wo);
   ss = zeros (1, 3);
   for c = 1:3
     ss(c) = spec.ss (f(:,c), c);

@@ -8,7 +8,7 @@
 ## The table of BRDF samples that a scene's pixels see, weighted by their
 ## share of the image: what a fit must get right for that picture.
 ##
-## @var{material} is a MERL material or a Lafortune model (see
+## @var{material} is a MERL material or an analytic model of any type (see
 ## @code{material_eval}); @var{scene} a scene struct from @code{scene_make}.
 ## The samples are the ones @code{rt_render} takes: the same stratified
 ## pixel samples (@code{scene.spp}, @code{scene.seed}, @code{scene.jitter}),
@@ -106,7 +106,7 @@ function [S, img] = merl_scene (material, scene, varargin)
   scene_check (scene, "merl_scene");
   if (isempty (material_kind (material)))
     error ("lafortune:badMaterial",
-           "merl_scene: MATERIAL must be a MERL material or a Lafortune model, got %s",
+           "merl_scene: MATERIAL must be a MERL material or an analytic model (brdf_model), got %s",
            class (material));
   endif
   opt = parse_opts (varargin, "merl_scene", struct ("bin", 0.25, "prior", 1e-4, "refine", 256));

@@ -45,8 +45,8 @@
 ## (Lit from nearly behind the viewer, |L + V| < 0.1, and with a
 ## perspective camera the inner maps stay over to.)
 ##
-## A Lafortune @var{material} gets one table per term: the diffuse term and
-## each lobe, summed by an @code{average} pigment and @code{diffuse} @var{k}
+## An analytic @var{material} of any type (@code{brdf_model}) gets one
+## table per term: the diffuse term and each lobe, summed by an @code{average} pigment and @code{diffuse} @var{k}
 ## for @var{k} tables.  A MERL @var{material} gets one table.
 ##
 ## @strong{Where the entries go.}  Each table has its own entries, placed
@@ -178,7 +178,7 @@ function info = pov_write_scene (scene, material, file, varargin)
   kind = material_kind (material);
   if (isempty (kind))
     error ("lafortune:badMaterial",
-           "%s: MATERIAL must be a Lafortune model or a MERL material, got %s",
+           "%s: MATERIAL must be an analytic model (brdf_model) or a MERL material, got %s",
            fname, class (material));
   endif
   light = scene.light;
@@ -201,10 +201,10 @@ function info = pov_write_scene (scene, material, file, varargin)
   ## V, for an orthographic camera (a sharp lobe is a narrow bump in (ti,
   ## theta_h), but a thin sliver along the edge of what normals reach in
   ## (ti, to), where to grows as theta_h squared), else to
-  C = inner_coord (persp, L, V);
+  C = pov_tables ("inner_coord", persp, L, V);
   if (opt.crop || opt.cull || persp)     # the gamma levels need the points too
     S = pov_cast (scene, cam, L);
-    S.u = inner_of (S.ti, S.to, C);
+    S.u = pov_tables ("inner_of", S.ti, S.to, C);
   endif
   if (opt.crop)
     if (isempty (S.ti))
@@ -227,20 +227,8 @@ function info = pov_write_scene (scene, material, file, varargin)
   endif
 
   ## the terms, each tabulated densely by scene_slice
-  if (strcmp (kind, "lafortune"))
-    m = check_model (material, fname);
-    terms = {};
-    names = {};
-    if (any (m.rho_d != 0))
-      terms{end+1} = struct ("rho_d", m.rho_d, "Cxy", zeros (0, 3), "Cz", zeros (0, 3),
-                             "e", zeros (0, 3));
-      names{end+1} = "diffuse";
-    endif
-    for k = 1:rows (m.e)
-      terms{end+1} = struct ("rho_d", [0 0 0], "Cxy", m.Cxy(k,:), "Cz", m.Cz(k,:),
-                             "e", m.e(k,:));
-      names{end+1} = sprintf ("lobe %d", k);
-    endfor
+  if (! strcmp (kind, "merl"))
+    [terms, names] = model_terms (material, fname);
   else
     terms = {material};
     names = {"measured"};
@@ -258,7 +246,7 @@ function info = pov_write_scene (scene, material, file, varargin)
   ## the angle gamma between L and V: one value (orthographic), or levels
   ## over the range the visible points reach (perspective)
   if (persp)
-    gl = gamma_levels (scene, material, L, S, rng_i, rng_o, opt);
+    gl = pov_tables ("gamma_levels", scene, material, L, S, rng_i, rng_o, opt);
   else
     gl = acos (max (min (L * V', 1), -1));
   endif
@@ -273,19 +261,19 @@ function info = pov_write_scene (scene, material, file, varargin)
   u = linspace (rng_o(1), rng_o(2), 129);
   reach = true;
   if (! isempty (samp))
-    reach = reach_mask (samp, t', u', opt.pad);
+    reach = pov_tables ("reach_mask", samp, t', u', opt.pad);
   endif
   for g = 1:ng
-    sg = view_at_gamma (scene, L, gl(g));
+    sg = pov_tables ("view_at_gamma", scene, L, gl(g));
     for q = 1:nt
-      D{g,q} = term_grid (sg, terms{q}, rng_i, rng_o, n, samp, opt, gl(g), C);
+      D{g,q} = pov_tables ("term_grid", sg, terms{q}, rng_i, rng_o, n, samp, opt, gl(g), C);
       contrib(q) = max (contrib(q), D{g,q}.max);
     endfor
-    [lo, hi] = reach_bounds (t', gl(g), C);
+    [lo, hi] = pov_tables ("reach_bounds", t', gl(g), C);
     Mc = u >= lo & u <= hi & reach;
-    Rc = slice_grid (sg, material, t, u, gl(g), C);
-    peak = max ([peak, contrib, masked_max(Rc, Mc)]);
-    level = max (level, masked_quantile (Rc, Mc, 0.99));
+    Rc = pov_tables ("slice_grid", sg, material, t, u, gl(g), C);
+    peak = max ([peak, contrib, pov_tables("masked_max", Rc, Mc)]);
+    level = max (level, pov_tables ("masked_quantile", Rc, Mc, 0.99));
   endfor
   ## the error allowed is relative to the view's radiance level: its 99th
   ## percentile over the reached angles (a measured material's specular
@@ -324,16 +312,17 @@ function info = pov_write_scene (scene, material, file, varargin)
       tabs(q).inner = [tabs(q).inner, ni];
     endfor
     if (persp)
-      body{end+1} = gamma_sdl (id, names{q}, gl, cam.eye, L);
+      body{end+1} = pov_sdl ("gamma", id, names{q}, gl, cam.eye, L);
     else
       body{end+1} = sprintf ("#declare %s = pigment { %s_1 }\n", id, id);
     endif
   endfor
 
   ## write
-  [osdl, nfd] = objects_sdl (scene.objects, keep, faces);
-  parts = [{header_sdl(scene, material, opt, tabs, rng_i, rng_o, peak, C), camera_sdl(cam, scene), ...
-            light_sdl(scene, L, cam)}, body, {texture_sdl(find (kept)), osdl}];
+  [osdl, nfd] = pov_sdl ("objects", scene.objects, keep, faces);
+  parts = [{pov_sdl("header", scene, material, opt, tabs, rng_i, rng_o, peak, C), ...
+            pov_sdl("camera", cam, scene), pov_sdl("light", scene, L, cam)}, ...
+           body, {pov_sdl("texture", find (kept)), osdl}];
   atomic_write (file, fname, @(fid) write_text (fid, parts));
   d = dir (file);
   info = struct ("file", file, "bytes", d.bytes, "terms", tabs,
@@ -346,102 +335,15 @@ endfunction
 ## The knots and the SDL of one term's table at one gamma level: outer map
 ## over ti, inner maps over the inner angle (C); NO and NI count the entries.
 function [sdl, no, ni] = term_sdl (Dq, tol, peak, opt, L, C, name, id, persp)
-  ti = Dq.ti;
-  to = Dq.to;
-  T = Dq.T;
-  Md = Dq.M;
-  c = cos (ti);
-  n = numel (ti);
-  Ko = pov_knots (ti, reshape (T, n, 3 * n), c, repmat (Md, 1, 3), tol, opt.entries,
-                  opt.knots);
-  io = find (Ko);
-  ## each inner table serves the ti between its neighbours
-  lo = io([1 1:end-1]);
-  hi = io([2:end end]);
-  cs = [zeros(1, n); cumsum(Md, 1)];
-  Mi = (cs(hi+1,:) - cs(lo,:))' > 0;                     # n x numel(io)
-  G = permute (T(io,:,:), [2 3 1]);                      # n x 3 x numel(io)
-  Ki = pov_knots (to, G, reshape (c(io), 1, 1, []), reshape (Mi, n, 1, []), tol,
-                  opt.entries, opt.knots);
+  [T, io, Ki] = pov_tables ("term_knots", Dq, tol, peak, opt);
   no = numel (io);
   ni = sum (Ki, 1);
-  T(abs (T) < 1e-12 * peak) = 0;     # no 1e-50s in the file
   if (persp)
     inner = "aoi";                   # 1 - angle (N, ray toward the eye)/pi
   else
-    inner = sprintf ("slope { %s }", vec (C.dir));
+    inner = sprintf ("slope { %s }", pov_sdl ("vec", C.dir));
   endif
-  sdl = table_sdl (id, name, T, ti, to, io, Ki, L, inner);
-endfunction
-
-## Levels of gamma = angle (L, V) for a perspective camera: the range the
-## lit visible samples reach (padded), cut until linear interpolation
-## between neighbouring levels of the whole material's slice, on a 65 x 65
-## grid over the reached (ti, to), is within table_tol/2 of its largest
-## radiance (at most 64 levels).
-function gl = gamma_levels (scene, material, L, S, rng_i, rng_o, opt)
-  if (isempty (S.gamma))
-    gl = [0; pi/2];
-    return;
-  endif
-  g0 = max (0, min (S.gamma) - opt.pad);
-  g1 = min (pi, max (S.gamma) + opt.pad);
-  t = linspace (rng_i(1), rng_i(2), 65);
-  u = linspace (rng_o(1), rng_o(2), 65);
-  M = reach_mask ([S.ti, S.to], t', u', opt.pad);
-  tab = @(g) masked (scene_slice (view_at_gamma (scene, L, g), material, t, u), M);
-  gl = [g0; g1];
-  R = {tab(g0), tab(g1)};
-  peak = max ([R{1}(:); R{2}(:); realmin]);
-  tol = opt.gamma_tol * peak;
-  split = true;
-  while (any (split) && numel (gl) < 64)
-    split = false (numel (gl) - 1, 1);
-    Rm = cell (1, numel (gl) - 1);
-    for k = 1:numel (gl) - 1
-      gm = (gl(k) + gl(k+1)) / 2;
-      Rm{k} = tab (gm);
-      err = max (abs (Rm{k}(:) - (R{k}(:) + R{k+1}(:)) / 2));
-      split(k) = err > tol && gl(k+1) - gl(k) > 1e-4;
-    endfor
-    k = find (split);
-    k = k(1:min (numel (k), 64 - numel (gl)));
-    if (isempty (k))
-      break;
-    endif
-    gn = (gl(k) + gl(k+1)) / 2;
-    [gl, o] = sort ([gl; gn]);
-    R = [R, Rm(k)](o);
-  endwhile
-endfunction
-
-function R = masked (R, M)
-  R = R .* M;
-endfunction
-
-## SCENE seen along a direction at the angle G from the light L (an
-## orthographic view), for scene_slice
-function sg = view_at_gamma (scene, L, g)
-  p = null (L)(:,1)';
-  Vg = cos (g) * L + sin (g) * p;
-  sg = scene;
-  sg.camera = struct ("type", "orthographic", "eye", Vg, "target", [0 0 0],
-                      "up", null (Vg)(:,1)', "extent", 1, "fov", []);
-endfunction
-
-## the pigment ID of a term under a perspective camera: a function pattern
-## of the position, gamma/pi = angle (L, eye - P)/pi, indexes its levels
-function s = gamma_sdl (id, name, gl, eye, L)
-  e = eye;
-  fn = sprintf (["acos(min(1,max(-1,(%.12g*(%.12g-x)+%.12g*(%.12g-y)+%.12g*(%.12g-z))" ...
-                 "/sqrt((%.12g-x)*(%.12g-x)+(%.12g-y)*(%.12g-y)+(%.12g-z)*(%.12g-z)+1e-30))))/pi"],
-                L(1), e(1), L(2), e(2), L(3), e(3), e(1), e(1), e(2), e(2), e(3), e(3));
-  s = sprintf ("// %s: %d levels of gamma = angle (L, V) from %.6g to %.6g rad\n#declare %s = pigment { function { %s } pigment_map {\n",
-               name, numel (gl), gl(1), gl(end), id, fn);
-  for g = 1:numel (gl)
-    s = [s, sprintf("[%.9g %s_%d]\n", gl(g) / pi, id, g)];
-  endfor
-  s = [s, "} }\n"];
+  sdl = pov_sdl ("table", id, name, T, Dq.ti, Dq.to, io, Ki, L, inner);
 endfunction
 
 function opt = check_opts (opt, fname)
@@ -470,367 +372,6 @@ function opt = check_opts (opt, fname)
     error ("lafortune:badOption", "%s: \"dense\" must be 0 (automatic) or an integer >= \"entries\"",
            fname);
   endif
-endfunction
-
-## Dense grids for one term, and its table on them.  The grids are not
-## uniform: starting from a uniform one, twice, the term is tabulated and the
-## points are redistributed along each axis with density proportional to the
-## square root of the largest second derivative along it (the spacing that
-## equalises the error of linear interpolation), plus a uniform share.  Sharp
-## lobes thus get fine sampling around their peak.
-function D = term_grid (scene, term, rng_i, rng_o, n, samp, opt, gam, C)
-  passes = 2 * ! strcmp (opt.knots, "uniform");
-  flat = false;
-  n0 = n;
-  if (passes)
-    n0 = min (n, 129);                          # a coarse first look
-  endif
-  ti = linspace (rng_i(1), rng_i(2), n0)';
-  to = linspace (rng_o(1), rng_o(2), n0)';
-  for pass = 0:passes
-    R = slice_grid (scene, term, ti, to, gam, C);
-    c = cos (ti);
-    [lo, hi] = reach_bounds (ti, gam, C);
-    T = extend_c1 (R ./ c, ti, to, lo, hi,
-                   @(t, p) slice_grid (scene, term, t, p, gam, C) / cos (t));
-    ## what any normal can reach (the extension beyond it only serves the
-    ## interpolation next to it), and with samples what the view reaches
-    M = to' >= lo - opt.pad & to' <= hi + opt.pad;
-    if (! isempty (samp))
-      M &= reach_mask (samp, ti, to, opt.pad);
-    endif
-    if (pass == passes)
-      break;
-    endif
-    G = T .* c;
-    ki = curvature (ti, G, M);
-    ko = curvature (to, permute (G, [2 1 3]), M');
-    if (pass == 0 && ! any (ki > 1e-9 * max (abs (G(:)))) && ! any (ko > 1e-9 * max (abs (G(:)))))
-      flat = true;                              # (a diffuse term): exact with 2
-      break;                                    # entries, no refining
-
-    endif
-    nn = n;
-    if (pass < passes - 1)
-      nn = min (n, 257);                        # an intermediate look
-    endif
-    ti = regrid (ti, ki, nn);
-    to = regrid (to, ko, nn);
-  endfor
-  D.flat = flat;
-  D.ti = ti;
-  D.to = to;
-  ## the largest radiance where a normal really reaches (no padding): past
-  ## the boundary scene_slice's clamped configurations are not the scene's
-  ## and a sharp lobe may be huge there
-  ## and what the view reaches: M (on this grid) has it
-  [lo, hi] = reach_bounds (ti, gam, C);
-  M0 = to' >= lo & to' <= hi;
-  D.max = masked_max (R, M0 & M);
-  ## the padding and the continuation only serve the interpolation: no entry
-  ## above 10 times the term's largest radiance in the view (the file then
-  ## holds no 1e130 where a lobe explodes past what the view reaches)
-  T = min (T, 10 * D.max ./ max (cos (ti), 1e-3));
-  D.T = T;
-  D.M = M;
-endfunction
-
-## largest |second derivative| along dimension 1 of G over the masked columns
-function k = curvature (x, G, M)
-  n = numel (x);
-  d = diff (G, 1, 1) ./ diff (x);
-  k2 = abs (2 * diff (d, 1, 1) ./ (x(3:end) - x(1:end-2)));
-  k2(! (M(2:end-1,:) & true (size (k2)))) = 0;
-  k = max (reshape (permute (k2, [1 3 2]), n - 2, []), [], 2);
-  k = [k(1); k; k(end)];
-endfunction
-
-function y = regrid (x, k, n)
-  r = sqrt (k);
-  w = min (5, numel (r));                       # widen the peaks a little
-  rr = r;
-  for s = 1:w
-    rr(1+s:end) = max (rr(1+s:end), r(1:end-s));
-    rr(1:end-s) = max (rr(1:end-s), r(1+s:end));
-  endfor
-  len = x(end) - x(1);
-  tot = trapz (x, rr);
-  if (! (tot > 0) || ! (len > 0))
-    y = linspace (x(1), x(end), n)';
-    return;
-  endif
-  rr += 0.3 * tot / len;                        # 23 % of the points uniform
-  C = cumtrapz (x, rr);
-  y = interp1 (C / C(end), x, linspace (0, 1, n)');
-  y([1 end]) = x([1 end]);
-endfunction
-
-## reachable cells of the (ti, to) grid: for each ti row, the range of to of
-## the samples within PAD of it, widened by PAD
-function Md = reach_mask (samp, ti, to, pad)
-  n = numel (ti);
-  [sti, o] = sort (samp(:,1));
-  sto = samp(o,2);
-  a = lookup (sti, ti - pad) + 1;               # samples a:b lie within PAD
-  b = lookup (sti, ti + pad);
-  lo = inf (n, 1);
-  hi = -inf (n, 1);
-  for i = find (b >= a)'
-    lo(i) = min (sto(a(i):b(i)));
-    hi(i) = max (sto(a(i):b(i)));
-  endfor
-  Md = to' >= lo - pad & to' <= hi + pad;
-endfunction
-
-## No normal reaches (ti, to) outside |ti - gamma| <= to <= ti + gamma, where
-## scene_slice clamps; that leaves a crease along the boundary (the specular
-## peak lies on it), which linear interpolation across it would smear over a
-## whole table cell.  Continue each row linearly (in to) from the boundary
-## instead: the table is then smooth to first order across it.  Extrapolated
-## values are kept >= 0.
-function T = extend_c1 (T, ti, to, lo, hi, evalrow)
-  n = numel (to);
-  to = to(:)';
-  in = to >= lo & to <= hi;                     # n x n
-  ok = sum (in, 2) >= 3;
-  j1 = min (n + 1 - sum (cummax (in, 2), 2), n - 1);   # first reachable column
-  j2 = max (sum (cummax (fliplr (in), 2), 2), 2);      # last
-  r = (1:rows (T))';
-  for ch = 1:size (T, 3)
-    X = T(:,:,ch);
-    a1 = X(sub2ind (size (X), r, j1));
-    s1 = (X(sub2ind (size (X), r, j1 + 1)) - a1) ./ (to(j1 + 1) - to(j1))';
-    a2 = X(sub2ind (size (X), r, j2));
-    s2 = (a2 - X(sub2ind (size (X), r, j2 - 1))) ./ (to(j2) - to(j2 - 1))';
-    below = ok & (1:n) < j1;
-    above = ok & (1:n) > j2;
-    E1 = max (a1 + s1 .* (to - to(j1)'), 0);
-    E2 = max (a2 + s2 .* (to - to(j2)'), 0);
-    X(below) = E1(below);
-    X(above) = E2(above);
-    T(:,:,ch) = X;
-  endfor
-  ## rows whose reachable range holds fewer than 3 grid points (ti near 0, or
-  ## light and viewer nearly aligned): 3 points across it, evaluated exactly
-  for i = find (! ok)'
-    p = linspace (lo(i), hi(i), 3);
-    v = reshape (evalrow (ti(i), p), 3, []);    # points x channels
-    if (p(3) > p(1))
-      sl = (v(2,:) - v(1,:)) / (p(2) - p(1));
-      sh = (v(3,:) - v(2,:)) / (p(3) - p(2));
-      row = interp1 (p', v, min (max (to', p(1)), p(3)));
-    else
-      sl = sh = zeros (1, columns (v));
-      row = repmat (v(1,:), n, 1);
-    endif
-    row += (to' < p(1)) .* sl .* (to' - p(1)) + (to' > p(3)) .* sh .* (to' - p(3));
-    T(i,:,:) = reshape (max (row, 0), 1, n, []);
-  endfor
-endfunction
-
-## The inner maps' angle (private to this file): theta_h = angle (N, H), H
-## = (L + V)/|L + V|, for an orthographic camera (POV-Ray's slope toward
-## H), unless L and V are nearly opposite; to = angle (N, V) otherwise
-## (slope toward V; with a perspective camera the aoi pattern).
-function C = inner_coord (persp, L, V)
-  h = (L + V) / 2;
-  C = struct ("half", ! persp && norm (h) > 0.05, "dir", V, "label", "to = angle(N,V)",
-              "top", pi/2 - 1e-6, "gamma", acos (max (min (L * V', 1), -1)));
-  if (C.half)
-    C.dir = h / norm (h);
-    C.label = "theta_h = angle(N,H), H = (L+V)/|L+V|";
-    C.top = pi;
-  endif
-endfunction
-
-## the inner angle of the configurations (TI, TO) (same sizes)
-function u = inner_of (ti, to, C)
-  u = to;
-  if (C.half)
-    u = half_angle (ti, to, C.gamma);
-  endif
-endfunction
-
-## the range of the inner angle that some normal reaches at each TI (a
-## column), at gamma = angle (L, V) = GAM: to in [|ti - gam|, ti + gam],
-## theta_h in [|ti - gam/2|, ti + gam/2] (N on the cone of angle ti about
-## L, which is at gam/2 from H; capped where the sums pass pi)
-function [lo, hi] = reach_bounds (ti, gam, C)
-  g = gam;
-  if (C.half)
-    g = gam / 2;
-  endif
-  lo = abs (ti - g);
-  hi = min (ti + g, 2 * pi - ti - g);
-endfunction
-
-## scene_slice on the grid TI x U of the inner angle (numel (TI) x numel (U)
-## x 3): with theta_h, to follows from cos to = 2 cos theta_h cos (gam/2) -
-## cos ti (N in the frame of H: N.L + N.V = 2 cos theta_h cos (gam/2))
-function R = slice_grid (scene, term, ti, u, gam, C)
-  if (! C.half)
-    R = scene_slice (scene, term, ti, u);
-    return;
-  endif
-  ti = ti(:);
-  u = u(:)';
-  to = acos (min (max (2 * cos (u) * cos (gam / 2) - cos (ti), -1), 1));
-  to = min (to, pi/2 - 1e-6);   # as the (ti, to) tables: continued across the
-                                # silhouette, where scene_slice steps to 0
-  TI = repmat (ti, 1, numel (u));
-  R = reshape (scene_slice (scene, term, TI(:), to(:), "pairs"), numel (ti), numel (u), []);
-endfunction
-
-## the Q-quantile of the largest channel of R (n x m x 3) where M
-function v = masked_quantile (R, M, q)
-  x = max (R, [], 3)(M & true (rows (R), columns (R)));
-  v = 0;
-  if (! isempty (x))
-    v = quantile (x(:), q);
-  endif
-endfunction
-
-function v = masked_max (R, M)
-  v = 0;
-  for ch = 1:size (R, 3)
-    x = R(:,:,ch);
-    if (any (M(:)))
-      v = max (v, max (x(M)));
-    endif
-  endfor
-endfunction
-
-function s = vec (v)
-  v(v == 0) = 0;                 # no "-0"
-  s = sprintf ("<%.12g, %.12g, %.12g>", v);
-endfunction
-
-## one table: slope toward L outside (ti, descending so that the slope value
-## 1 - ti/pi ascends), INNER inside (slope toward H or V, or aoi)
-function s = table_sdl (id, name, T, ti, to, io, Ki, L, inner)
-  parts = cell (1, numel (io) + 2);
-  parts{1} = sprintf (["// %s: %d outer entries (angle to the light), inner entries per outer: %d to %d\n" ...
-                       "#declare %s = pigment { slope { %s } pigment_map {\n"],
-                      name, numel (io), min (sum (Ki, 1)), max (sum (Ki, 1)), id, vec (L));
-  for k = numel (io):-1:1
-    jo = flipud (find (Ki(:,k)));
-    v = [1 - to(jo)'/pi; reshape(T(io(k),jo,:), numel (jo), 3)'];
-    parts{numel (io) - k + 2} = [sprintf("[%.9g %s pigment_map {\n", 1 - ti(io(k))/pi, inner), ...
-                                 sprintf("[%.9g rgb <%.7g,%.7g,%.7g>]\n", v), "}]\n"];
-  endfor
-  parts{end} = "} }\n";
-  s = [parts{:}];
-endfunction
-
-function s = header_sdl (scene, material, opt, tabs, rng_i, rng_o, peak, C)
-  nm = name_of (material);
-  sname = name_of (scene);
-  s = sprintf (["// POV-Ray 3.7 scene written by pov_write_scene (lafortune package)\n" ...
-                "// scene '%s', material '%s', %d x %d pixels\n" ...
-                "// render: povray +I<this> +O<out>.exr +FE +W%d +H%d -A File_Gamma=1.0\n" ...
-                "// tables of f(wi,wo)*E over ti = angle(N,L) in [%.6g, %.6g], %s in [%.6g, %.6g] rad\n" ...
-                "// (slope value = 1 - angle/pi); knots %s, entries <= %d, table_tol %g, lobe_tol %g,\n" ...
-                "// largest radiance %.6g\n"],
-               sname, nm, scene.width, scene.height, scene.width, scene.height,
-               rng_i, C.label, rng_o, opt.knots, opt.entries, opt.table_tol, opt.lobe_tol, peak);
-  for q = 1:numel (tabs)
-    if (tabs(q).kept)
-      st = "kept";
-    else
-      st = "left out";
-    endif
-    s = [s, sprintf("// %s: largest radiance %.3g of the whole, %s\n", tabs(q).name,
-                    tabs(q).contribution, st)];
-  endfor
-  bg = [0 0 0];
-  if (isfield (scene, "background") && numel (scene.background) >= 1)
-    bg = double (scene.background(:)') .* [1 1 1];
-  endif
-  s = [s, sprintf("#version 3.7;\nglobal_settings { assumed_gamma 1.0 ambient_light rgb 0 }\n"), ...
-       sprintf("background { rgb %s }\n", vec (bg))];
-endfunction
-
-function s = camera_sdl (cam, scene)
-  s = sprintf (["// right-handed, y-up world; explicit vectors, so POV-Ray does not mirror\n" ...
-                "camera { %s location %s direction %s right %s up %s }\n"],
-               cam.type, vec (cam.eye), vec (cam.f), vec (cam.r * cam.w), vec (cam.u * cam.h));
-endfunction
-
-function s = light_sdl (scene, L, cam)
-  ## far enough that every object is in front of it
-  ob = scene.objects;
-  ext = norm (cam.eye - double (scene.camera.target(:)')) + cam.w + cam.h;
-  for k = 1:numel (ob)
-    switch (ob(k).type)
-      case "sphere"
-        ext = max (ext, norm (ob(k).center) + ob(k).radius);
-      case "plane"
-        ext = max (ext, norm (ob(k).point));
-      case "mesh"
-        ext = max (ext, max (sqrt (sum (double (ob(k).vertices) .^ 2, 2))));
-    endswitch
-  endfor
-  ext += norm (cam.eye);
-  s = sprintf ("light_source { %s color rgb 1 parallel point_at <0, 0, 0> }\n",
-               vec (L * 1000 * ext));
-endfunction
-
-## the average of the tables, times their number: their sum
-function s = texture_sdl (q)
-  fin = sprintf ("finish { ambient 0 emission 0 diffuse %d brilliance 1 specular 0 phong 0 reflection 0 }",
-                 max (numel (q), 1));
-  if (isempty (q))
-    pig = "pigment { rgb 0 }";
-  elseif (numel (q) == 1)
-    pig = sprintf ("pigment { Lf_term%d }", q);
-  else
-    pig = ["pigment { average pigment_map {", sprintf(" [1 Lf_term%d]", q), " } }"];
-  endif
-  s = sprintf ("// POV-Ray applies max(cos ti, 0) and the shadows\n#declare Lf_tex = texture { %s %s }\n",
-               pig, fin);
-endfunction
-
-function [s, nfd] = objects_sdl (ob, keep, faces)
-  parts = {};
-  nfd = 0;
-  for k = 1:numel (ob)
-    if (! keep(k))
-      if (strcmp (ob(k).type, "mesh"))
-        nfd += rows (ob(k).faces);
-      endif
-      continue;
-    endif
-    switch (ob(k).type)
-      case "sphere"
-        parts{end+1} = sprintf ("sphere { %s, %.12g texture { Lf_tex } }\n",
-                                vec (ob(k).center), ob(k).radius);
-      case "plane"
-        nn = double (ob(k).normal(:)');
-        nn /= norm (nn);
-        parts{end+1} = sprintf ("plane { %s, %.12g texture { Lf_tex } }\n", vec (nn),
-                                nn * double (ob(k).point(:)));
-      case "mesh"
-        fc = double (ob(k).faces);
-        if (! isempty (faces{k}))
-          nfd += nnz (! faces{k});
-          fc = fc(faces{k},:);
-        endif
-        [used, ~, j] = unique (fc(:));
-        fc = reshape (j, size (fc)) - 1;
-        vx = double (ob(k).vertices(used,:));
-        p = {sprintf("mesh2 {\n vertex_vectors { %d,\n", rows (vx)), ...
-             sprintf("<%.9g,%.9g,%.9g>\n", vx')};
-        if (! isempty (ob(k).normals))
-          nv = double (ob(k).normals(used,:));
-          p(end+1:end+2) = {sprintf(" }\n normal_vectors { %d,\n", rows (nv)), ...
-                            sprintf("<%.9g,%.9g,%.9g>\n", nv')};
-        endif
-        p(end+1:end+3) = {sprintf(" }\n face_indices { %d,\n", rows (fc)), ...
-                          sprintf("<%d,%d,%d>\n", fc'), " }\n texture { Lf_tex }\n}\n"};
-        parts{end+1} = [p{:}];
-    endswitch
-  endfor
-  s = [parts{:}];
 endfunction
 
 %!shared sc, m

@@ -10,8 +10,9 @@
 ## Render a scene with a measured (MERL) or Lafortune material: the Octave raytracer.
 ##
 ## @var{scene} is a struct from @code{scene_make}; every object gets
-## @var{material} (a MERL struct from @code{merl_read}/@code{merl_synth} or a
-## Lafortune model, else error @code{lafortune:badMaterial}).  @var{img} is
+## @var{material} (a MERL struct from @code{merl_read}/@code{merl_synth} or an
+## analytic model of any type, @code{brdf_model}, else error
+## @code{lafortune:badMaterial}), shaded through @code{material_eval}.  @var{img} is
 ## the @code{scene.height} x @code{scene.width} x 3 linear HDR image:
 ## the mean over @code{scene.spp} primary rays per pixel of the
 ## radiance f(wi, wo) max(cos theta_i, 0) E, 0 where a shadow ray toward the
@@ -51,7 +52,7 @@
 ## reachable set, these coordinates keep a sharp lobe on a few rows:
 ## default size @code{"slice_size"} = [128 64] (theta_h x psi), single
 ## precision, 128 x 64 x 3 x 4 bytes = 98 kB, 356 times less than the 35 MB
-## of a MERL table.  For Lafortune models the image then differs from the
+## of a MERL table.  For analytic models the image then differs from the
 ## direct one by < 1e-4 of its peak (RMS; 88 dB PSNR for a lobe of exponent
 ## 2000 on the lit sphere); for MERL materials the difference is about 1e-3
 ## to 2e-3 (50 to 55 dB) whatever the table size, because the direct
@@ -134,7 +135,7 @@ function [img, info, cache] = rt_render (scene, material, varargin)
   kind = material_kind (material);
   if (isempty (kind))
     error ("lafortune:badMaterial",
-           "rt_render: MATERIAL must be a MERL material (fields data, valid) or a Lafortune model (fields rho_d, Cxy, Cz, e), got %s",
+           "rt_render: MATERIAL must be a MERL material (fields data, valid) or an analytic model (a Lafortune model, fields rho_d, Cxy, Cz, e, or see brdf_model), got %s",
            class (material));
   endif
   opt = parse_opts (varargin, "rt_render",

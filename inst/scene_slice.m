@@ -22,7 +22,7 @@
 ## @code{"pairs"}, @var{ti} and @var{to} have the same length and @var{R} is
 ## numel(ti) x 3, one row per pair (ti(k), to(k)): no tensor grid.
 ##
-## @var{material} is a Lafortune model or a MERL material (see
+## @var{material} is an analytic model (any type) or a MERL material (see
 ## @code{material_eval}).  This is the one tabulation both renderers use
 ## (@code{rt_render} and @code{pov_write_scene}).  Scenes with a point light
 ## or a perspective camera have no such slice: error
@@ -57,7 +57,7 @@ function [R, gamma] = scene_slice (scene, material, ti, to, mode)
   endif
   if (isempty (material_kind (material)))
     error ("lafortune:badMaterial",
-           "scene_slice: MATERIAL must be a Lafortune model or a MERL material, got %s",
+           "scene_slice: MATERIAL must be an analytic model (brdf_model) or a MERL material, got %s",
            class (material));
   endif
   ti = double (ti(:));

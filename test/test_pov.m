@@ -51,6 +51,61 @@
 %! assert (nnz (sh), 0);
 
 %!test
+%! ## every model type, through material_eval in both renderers: POV-Ray's
+%! ## tables (one per term, model_terms) against rt_render's direct shading,
+%! ## two lobes (broad and sharp) per model, on the sphere and the spheres
+%! for sn = {"sphere", "spheres"}
+%!   sc = scene_make (sn{1}, "size", [64 64], "spp", 1);
+%!   prev = [];
+%!   for t = {"blinnphong", "ward", "cooktorrance", "ggx", "ashikhminshirley"}
+%!     d = brdf_model (t{1});
+%!     w = merge (d.hi(2) > 100, [30; 400], [0.2; 0.05]);     # exponent or roughness
+%!     args = {"rho_d", [0.3 0.1 0.05], "ks", [0.5 0.4 0.3; 0.2 0.2 0.2], d.shape{1}, w};
+%!     if (numel (d.shape) > 1)
+%!       args(end+1:end+2) = {"F0", 0.1};
+%!     endif
+%!     m = brdf_model (t{1}, args{:});
+%!     ref = rt_render (sc, m, "jitter", false, "mode", "direct", "progress", false);
+%!     img = pov_render (sc, m);
+%!     assert (img_psnr (ref, img) >= 50, "%s on %s: %.1f dB", t{1}, sn{1}, img_psnr (ref, img));
+%!     assert (max (img(:)) > 0.1);
+%!     if (! isempty (prev))
+%!       ## the renders match far better than another model's picture does:
+%!       ## the test can fail
+%!       assert (img_psnr (ref, img) > img_psnr (ref, prev) + 10);
+%!     endif
+%!     prev = ref;
+%!   endfor
+%! endfor
+
+%!test
+%! ## the tabulation alone, without the SDL text (private pov_tables, called
+%! ## from its folder): a GGX lobe's dense table is scene_slice's values over
+%! ## cos ti on its grid, and its knots stay within the entries
+%! g = brdf_model ("ggx", "ks", [1 0.5 0.2], "alpha", 0.08, "F0", 0.05);
+%! sc = scene_make ("sphere", "size", [32 32], "spp", 1);
+%! opt = struct ("entries", 64, "knots", "adaptive", "table_tol", 1e-3, "pad", 0.02);
+%! here = pwd ();
+%! unwind_protect
+%!   cd (fullfile (fileparts (which ("lafortune_eval")), "private"));
+%!   cam = scene_camera (sc);
+%!   L = sc.light.direction / norm (sc.light.direction);
+%!   C = pov_tables ("inner_coord", false, L, -cam.f);
+%!   gam = acos (L * -cam.f');
+%!   D = pov_tables ("term_grid", sc, g, [0 1.4], [0 C.top], 129, [], opt, gam, C);
+%!   R = pov_tables ("slice_grid", sc, g, D.ti, D.to, gam, C);
+%!   [lo, hi] = pov_tables ("reach_bounds", D.ti, gam, C);
+%!   in = D.to' > lo + 0.1 & D.to' < hi - 0.1;   # (near the edges: the C1 continuation)
+%!   V = D.T .* cos (D.ti);
+%!   assert (V(repmat (in, [1 1 3])), R(repmat (in, [1 1 3])), 1e-12 * max (R(:)));
+%!   [T, io, Ki] = pov_tables ("term_knots", D, 1e-3 * D.max, D.max, opt);
+%!   assert (numel (io) <= 64 && all (sum (Ki, 1) <= 64));
+%!   assert (numel (io) > 8);                  # a sharp lobe needs entries
+%! unwind_protect_cleanup
+%!   cd (here);
+%! end_unwind_protect
+
+%!test
 %! ## a sharp lobe (e = 2000): the entries go where it bends, 256 suffice
 %! ms = struct ("rho_d", [0.05 0.05 0.05], "Cxy", -[1 1 1], "Cz", [1 1 1], "e", 2000 * [1 1 1]);
 %! sc = scene_make ("sphere", "size", [64 64], "spp", 1);

@@ -20,7 +20,7 @@ function [items, names] = plot_items (x, names, fname, what)
   for k = 1:numel (items)
     if (isempty (material_kind (items{k})))
       error ("lafortune:badMaterial",
-             "%s: %s must be Lafortune models (fields rho_d, Cxy, Cz, e) or MERL materials (fields data, valid); item %d is a %s",
+             "%s: %s must be analytic models (Lafortune: fields rho_d, Cxy, Cz, e; others: see brdf_model) or MERL materials (fields data, valid); item %d is a %s",
              fname, what, k, class (items{k}));
     endif
   endfor
@@ -32,6 +32,8 @@ function [items, names] = plot_items (x, names, fname, what)
         names{k} = m.name;
       elseif (strcmp (material_kind (m), "lafortune"))
         names{k} = sprintf ("%d lobe(s)", rows (m.Cxy));
+      elseif (strcmp (material_kind (m), "model"))
+        names{k} = sprintf ("%s, %d lobe(s)", m.type, rows (m.ks));
       else
         names{k} = "measured";
       endif
