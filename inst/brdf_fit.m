@@ -20,11 +20,13 @@
 ## @code{weight}, a scene table's prior), and the fit keeps what
 ## @code{lafortune_fit} does: the same metrics and defaults, samples merged
 ## by what the model sees of a pair of directions (for these types (cos
-## theta_i, cos theta_o, wi.wo): exact), the data divided by their largest
+## theta_i, cos theta_o, wi.wo): exact, or cells of a grid for a large
+## table, @code{"reduce"}), the data divided by their largest
 ## magnitude (fitting c*y gives c times the fit of y), lobes grown one at a
 ## time from the fit with one lobe fewer (so the error never rises with
-## more lobes), a guard against lobes that explode between the samples, and
-## the trace of the error against run time.
+## more lobes), a guard (a result that is not finite or exceeds 10 times
+## the data's maximum on the data is rejected), and the trace of the error
+## against run time.
 ##
 ## Options:
 ## @table @code
@@ -43,6 +45,13 @@
 ## false (default) or true: a fit that reflects more light than it receives
 ## (@code{brdf_albedo} > 1 at some incidence) is refitted with Octave's
 ## @code{sqp} under the constraint albedo <= 1.
+## @item "reduce"
+## @code{"auto"} (default: samples equal in (cos theta_i, cos theta_o,
+## wi.wo) merged exactly up to 20000 samples; a larger table, such as the
+## whole hemisphere or a scene table's prior, on the cells of a 64 x 64 x
+## 64 grid over (sqrt (theta_h), theta_d, |cos theta_i - cos theta_o|), at
+## the weighted mean of their samples), @code{"exact"}, or n: an n x n x n
+## grid.
 ## @item "max_iter", "tol", "channels"
 ## as @code{lafortune_fit}'s.
 ## @end table
@@ -97,7 +106,7 @@ function [model, info, models] = brdf_fit (S, type, nlobes, varargin)
   def = model_def (type);
   opt = parse_opts (varargin, fname,
                     struct ("weight", [], "color", [], "tries", [], "energy", false,
-                            "max_iter", 100, "tol", 1e-7, "channels", 1:3));
+                            "max_iter", 100, "tol", 1e-7, "channels", 1:3, "reduce", "auto"));
   scene = isstruct (S) && isscalar (S) && isfield (S, "kind") && ischar (S.kind) && strcmp (S.kind, "scene");
   if (isempty (opt.tries))
     opt.tries = merge (scene, 4, 2);
@@ -146,6 +155,12 @@ function opt = check_opts (opt, fname)
     error ("lafortune:badOption", "%s: CHANNELS must be a subset of 1:3", fname);
   endif
   opt.channels = unique (opt.channels(:)');
+  if (! ((ischar (opt.reduce) && any (strcmp (opt.reduce, {"auto", "exact"})))
+         || (isnumeric (opt.reduce) && isscalar (opt.reduce) && opt.reduce >= 1
+             && opt.reduce == fix (opt.reduce))))
+    error ("lafortune:badOption",
+           "%s: REDUCE must be \"auto\", \"exact\" or a positive integer (grid cells per axis)", fname);
+  endif
 endfunction
 
 %!demo

@@ -355,24 +355,10 @@ endfunction
 
 ## One channel's data D (fit_data, scaled units) and its coarse grid R
 function [D, R] = channel_data (Ss, Sf, fspec, pspec, sc, c, j, xc, xr, jg, jrep, opt)
-  y = Ss.rgb(:,c);
-  if (any (y < 0) && ! any (y > 0))
-    warning ("lafortune:negativeData",
-             "lafortune_fit: channel %d has no positive value (a BRDF is non-negative); its fit is the zero model",
-             c);
-  endif
-  D = fit_data (fspec, c, j, xc, y);
-  D.s = sc(c);
-  ## the trace's rmse: the fit's own objective times D.s when that is the
-  ## plain one, else the plain metric's groups (fit_objective)
-  D.same = strcmp (opt.weight, "plain");
-  if (! D.same)
-    D.P = fit_data (pspec, c, j, xc, Sf.rgb(:,c));
-  endif
-  if (rows (xr) == rows (xc))
-    R = D;
-  else
-    R = coarse_data (D, jg, jrep);
+  D = fit_data (fspec, c, j, xc, Ss.rgb(:,c), sc(c), pspec, Sf.rgb(:,c), "lafortune_fit");
+  R = D;
+  if (rows (xr) != rows (xc))
+    R = fit_data ("coarse", D, jg, jrep);
   endif
 endfunction
 
@@ -501,7 +487,7 @@ endfunction
 ## cells' positions; about "screen_samples" cells, or the groups themselves
 ## when there are no more than that, or when COARSE is false), and for each
 ## cell the group nearest its position (REP), which stands for it in
-## coarse_data.
+## fit_data's coarse data.
 function [j, xc, xr, how, jg, rep] = groups (x, wt, opt, coarse)
   AUTO_GROUPS = 20000;
   AUTO_GRID = 512;
@@ -538,26 +524,6 @@ function [j, xc, xr, how, jg, rep] = groups (x, wt, opt, coarse)
     rep(jg(o(first))) = o(first);
   endif
 endfunction
-
-## The coarse data for screening starts and warm-up runs: per cell of the
-## coarse grid (JG: each group's cell), the group REP of D nearest the
-## cell's position stands for the cell, with the cell's
-## summed weights.  The objective on it is a quadrature of D's; unlike
-## the cell's mean value at its mean (a, c), it has no bias where the model
-## is curved within a cell, so its minimiser is closer to D's (measured on
-## the in-plane tables: 5 to 20% fewer iterations on D).
-function R = coarse_data (D, jg, rep)
-  R = D;
-  R.x = D.x(rep,:);
-  R.w = sqrt (accumarray (jg, D.w .^ 2));
-  R.ty = D.ty(rep);
-  R.wl = R.w;                          # (fit_data: wl is w for an identity)
-  if (! D.identity)
-    R.wl = sqrt (accumarray (jg, D.wl .^ 2));
-  endif
-  R.yl = D.yl(rep);
-endfunction
-
 
 function p = model_params (m, c)
   p = [m.rho_d(c); reshape([m.Cxy(:,c) m.Cz(:,c) m.e(:,c)].', [], 1)];

@@ -27,18 +27,22 @@ function rows = study_material (file, fits, sc, ts, published)
   rows = {};
   for i = 1:rows_of (fits)
     t0 = tic ();
-    [~, ~, ms] = lafortune_fit (T, 3, fits{i,2}{:});
+    [~, info, ms] = brdf_fit (T, fits{i,2}, 3, fits{i,3}{:});
     t = toc (t0);
+    alb = NaN;
+    if (isfield (info, "albedo"))
+      alb = max (info.albedo);
+    endif
     for k = 1:3
       q = img_compare (ref, rt_render (sc, ms{k}, "progress", false));
-      rows(end+1,:) = {mat, fits{i,1}, k, q.psnr, q.flip, q.deltae, q.hue, t};
+      rows(end+1,:) = {mat, fits{i,1}, k, q.psnr, q.flip, q.deltae, q.hue, t, alb};
     endfor
   endfor
   if (exist (published, "file"))
     m = lafortune_ngan (published, mat);
     if (! isempty (m))
       q = img_compare (ref, rt_render (sc, m, "progress", false));
-      rows(end+1,:) = {mat, "ngan2005 (published)", 1, q.psnr, q.flip, q.deltae, q.hue, 0};
+      rows(end+1,:) = {mat, "ngan2005 (published)", 1, q.psnr, q.flip, q.deltae, q.hue, 0, NaN};
     endif
   endif
 endfunction
@@ -51,6 +55,8 @@ warning ("off", "Octave:shadowed-function");
 warning ("off", "lafortune:notConverged");
 pkg load optim;
 args = argv ();
+models = any (strcmp (args, "--models"));
+args = args(! strcmp (args, "--models"));
 if (isempty (args))
   error ("study_scene_fits: give a folder of MERL .binary files");
 endif
@@ -71,12 +77,17 @@ here = fileparts (mfilename ("fullpath"));
 published = fullfile (here, "..", "..", "shared", "data", "ngan2005", "lafortune-1lobe.tsv");
 ## the fits compared: name, lafortune_fit options (a scene table's defaults
 ## are the recommended fit)
-fits = {"relative, every family, separate (default)", {};
-        "relative, every family, shared", {"color", "shared"};
-        "relative, one family, separate", {"weight", "relative", "tries", 1};
-        "image MSE (psnr), separate", {"weight", "psnr"};
-        "image MSE (psnr), shared", {"weight", "psnr", "color", "shared"};
-        "cube root, every family, separate", {"weight", "cuberoot"}};
+fits = {"relative, every family, separate (default)", "lafortune", {};
+        "relative, every family, shared", "lafortune", {"color", "shared"};
+        "relative, one family, separate", "lafortune", {"weight", "relative", "tries", 1};
+        "image MSE (psnr), separate", "lafortune", {"weight", "psnr"};
+        "image MSE (psnr), shared", "lafortune", {"weight", "psnr", "color", "shared"};
+        "cube root, every family, separate", "lafortune", {"weight", "cuberoot"}};
+if (models)
+  ## --models: every model type, each with a scene table's defaults
+  t = brdf_model ();
+  fits = [t(:), t(:), repmat({{}}, numel (t), 1)];
+endif
 sc = scene_make ("sphere", "size", [128 64], "spp", 8);
 ts = sc;
 ts.spp = 4;
@@ -90,7 +101,7 @@ for i = 1:numel (names)
   R = study_material (fullfile (dir_, [names{i} ".binary"]), fits, sc, ts, published);
   txt = "";
   for r = 1:rows (R)
-    txt = [txt sprintf("%s\t%s\t%d\t%.4f\t%.5f\t%.4f\t%.3f\t%.2f\n", R{r,:})];
+    txt = [txt sprintf("%s\t%s\t%d\t%.4f\t%.5f\t%.4f\t%.3f\t%.2f\t%.4f\n", R{r,:})];
   endfor
   fid = fopen ([f ".tmp"], "w");
   fputs (fid, txt);
@@ -103,8 +114,8 @@ A = {};
 for i = 1:numel (names)
   f = fullfile (out, [names{i} ".tsv"]);
   if (exist (f, "file"))
-    c = textscan (fileread (f), "%s %s %f %f %f %f %f %f", "delimiter", "\t");
-    A = [A; [c{1}, c{2}, num2cell([c{3:8}])]];
+    c = textscan (fileread (f), "%s %s %f %f %f %f %f %f %f", "delimiter", "\t");
+    A = [A; [c{1}, c{2}, num2cell([c{3:9}])]];
   endif
 endfor
 kinds = unique (A(:,2), "stable");

@@ -114,3 +114,25 @@
 %! b = lafortune_fit (S, 2);
 %! assert (isequal (a, b));
 %! assert (ia.type, "lafortune");
+
+%!test
+%! ## a large table is fitted on the cells of a grid (64 per axis over
+%! ## (sqrt (theta_h), theta_d, |cos ti - cos to|)): close to the fit on every
+%! ## sample, and on both sides of the reciprocity the cells fold
+%! m = brdf_model ("ggx", "rho_d", [0.1 0.2 0.3], "ks", [1 0.5 0.2], "alpha", 0.15, "F0", 0.05);
+%! rand ("seed", 3);
+%! n = 30000;
+%! t = acos (rand (n, 2));
+%! p = 2 * pi * rand (n, 1);
+%! S.wi = [sin(t(:,1)) zeros(n, 1) cos(t(:,1))];
+%! S.wo = [sin(t(:,2)) .* cos(p) sin(t(:,2)) .* sin(p) cos(t(:,2))];
+%! S.rgb = material_eval (m, S.wi, S.wo);
+%! [g, gi] = brdf_fit (S, "ggx", 1);
+%! assert (gi.reduce, "grid 64");
+%! assert (gi.groups < n);
+%! assert (g.alpha, m.alpha, 0.01 * m.alpha);
+%! assert (g.ks, m.ks, 0.02 * max (m.ks));
+%! assert (all (gi.rmse < 0.01 * max (S.rgb)));
+%! [e, ei] = brdf_fit (S, "ggx", 1, "reduce", "exact");
+%! assert (ei.reduce, "exact");
+%! assert (e.alpha, m.alpha, 1e-6);

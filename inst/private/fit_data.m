@@ -2,7 +2,9 @@
 ## SPDX-License-Identifier: GPL-3.0-or-later
 
 ## -*- texinfo -*-
-## @deftypefn {} {@var{D} =} fit_data (@var{spec}, @var{c}, @var{j}, @var{xc}, @var{y})
+## @deftypefn  {} {@var{D} =} fit_data (@var{spec}, @var{c}, @var{j}, @var{xc}, @var{y})
+## @deftypefnx {} {@var{D} =} fit_data (@var{spec}, @var{c}, @var{j}, @var{xc}, @var{y}, @var{s}, @var{pspec}, @var{yp}, @var{fname})
+## @deftypefnx {} {@var{R} =} fit_data ("coarse", @var{D}, @var{jg}, @var{rep})
 ## One channel's data as the fit sees it (private): the sums of the metric
 ## @var{spec} (from metric_spec, the one definition of the metrics) for
 ## channel @var{c}, merged over the groups @var{j} (N x 1, from fit_reduce)
@@ -23,8 +25,31 @@
 ## sqrt of their group sums, @code{yl}; for an identity transform, where ty
 ## is y, they are @code{w} and @code{ty}).  @code{ymax} is the largest |y|;
 ## @code{nch} = 1 channel (fit_stack makes several channels one problem).
+##
+## The one owner of the fit's data struct.  With @var{s} (the channel's
+## scale: @var{y} is the data divided by it), @var{pspec} (the plain metric
+## in the data's units) and @var{yp} (the data in those units), @var{D} is a
+## fit's channel: @code{s}, @code{same} (the fit's metric is the plain one:
+## its objective times s is the rmse) and otherwise @code{P}, the plain
+## metric's groups, for the trace's rmse (fit_objective); a channel with no
+## positive value warns @code{lafortune:negativeData} (in @var{fname}'s
+## name).  With "coarse", the data @var{D} on the cells @var{jg} of a
+## coarse grid (each group's cell), each cell represented by its group
+## @var{rep} with the cell's summed weights: the objective on it is a
+## quadrature of D's; unlike the cell's mean value at its mean (a, c), it
+## has no bias where the model is curved within a cell, so its minimiser is
+## closer to D's (on the in-plane tables: 5 to 20% fewer iterations on D).
 ## @end deftypefn
-function D = fit_data (spec, c, j, xc, y)
+function D = fit_data (spec, c, j, xc, y, s, pspec, yp, fname)
+  if (ischar (spec))
+    D = coarse (c, j, xc);
+    return;
+  endif
+  if (nargin > 5 && any (y < 0) && ! any (y > 0))
+    warning ("lafortune:negativeData",
+             "%s: channel %d has no positive value (a BRDF is non-negative); its fit is the zero model",
+             fname, c);
+  endif
   w = spec.w(:,c);
   ty = spec.ty(:,c);
   W = accumarray (j, w);
@@ -50,4 +75,23 @@ function D = fit_data (spec, c, j, xc, y)
   D.ymax = max (abs (y));
   D.nch = 1;
   D.ref = 1;
+  if (nargin > 5)
+    D.s = s;
+    D.same = strcmp (spec.name, "plain");
+    if (! D.same)
+      D.P = fit_data (pspec, c, j, xc, yp);
+    endif
+  endif
+endfunction
+
+function R = coarse (D, jg, rep)
+  R = D;
+  R.x = D.x(rep,:);
+  R.w = sqrt (accumarray (jg, D.w .^ 2));
+  R.ty = D.ty(rep);
+  R.wl = R.w;                          # (fit_data: wl is w for an identity)
+  if (! D.identity)
+    R.wl = sqrt (accumarray (jg, D.wl .^ 2));
+  endif
+  R.yl = D.yl(rep);
 endfunction

@@ -9,7 +9,9 @@
 ## brdf_fit's @var{info}.
 ##
 ## The model sees a pair only through (cos theta_i, cos theta_o, wi.wo),
-## so samples equal in those are merged (fit_reduce, exact); samples on or
+## so samples equal in those are merged (fit_reduce, exact; a large table,
+## such as a scene table's prior of the whole hemisphere, on cells of a grid,
+## see groups below); samples on or
 ## below the horizon, where every model is 0, and of weight 0 are left out.
 ## The data are divided by their largest magnitude per channel (one for all
 ## with "shared"): rho_d and ks scale with the data, the shape does not,
@@ -18,9 +20,14 @@
 ## amplitude and change of rho_d by linear least squares, the best
 ## @code{opt.tries} start a leasqr run each (fit_lm, in fit_phys's
 ## coordinates), and the best accepted result that lowers the objective is
-## kept, so that the error never rises with more lobes.  A result larger
-## than 10 times the data's maximum on the guard set (the data's groups and
-## an in-plane grid up to the data's largest angle) is rejected.  With
+## kept, so that the error never rises with more lobes.  A result that is
+## not finite or larger than 10 times the data's maximum on the data's
+## groups is rejected.  (Lafortune's guard also checks an in-plane grid
+## between the samples, where a Lafortune lobe, whose amplitude enters
+## through its base, can explode; these models' lobes are normalised
+## shapes with bounded parameters, and a true microfacet lobe legitimately
+## exceeds the data's maximum at grazing mirror angles the data do not
+## sample: that check rejected exact fits.)  With
 ## @code{opt.energy}, a result whose albedo exceeds 1 is refitted by
 ## @code{sqp} under the constraint (fit_energy).
 ## @end deftypefn
@@ -49,11 +56,10 @@ function [models, info] = fit_model (S, wt, n0, def, nlobes, opt)
   pspec = pall;
   pspec.w = pspec.w(keep,:);
   pspec.ty = pspec.ty(keep,:);
-  [j, xc] = fit_reduce (X, wt(keep), Inf);
-  Xg = [xc; plane_grid(min ([X(:,1); X(:,2); 1]))];
+  [j, xc, how] = groups (X, wt(keep), opt.reduce);
   nan3 = nan (1, 3);
   info = struct ("type", def.type, "nlobes", nlobes, "weight", opt.weight, "color", opt.color,
-                 "n", rows (X), "groups", rows (xc), "reduce", "exact",
+                 "n", rows (X), "groups", rows (xc), "reduce", how,
                  "rmse", nan3, "rel_rmse", nan3, "log_rmse", nan3, "cos_rmse", nan3,
                  "error", nan3, "iterations", zeros (1, 3), "full_iterations", zeros (1, 3),
                  "rejected", zeros (1, 3), "converged", true (1, 3), "time", zeros (1, 3),
@@ -71,19 +77,7 @@ function [models, info] = fit_model (S, wt, n0, def, nlobes, opt)
   endfor
   Ds = cell (1, 3);
   for c = opt.channels(:)'
-    y = Ss.rgb(:,c);
-    if (any (y < 0) && ! any (y > 0))
-      warning ("lafortune:negativeData",
-               "brdf_fit: channel %d has no positive value (a BRDF is non-negative); its fit is the zero model",
-               c);
-    endif
-    D = fit_data (fspec, c, j, xc, y);
-    D.s = sc(c);
-    D.same = strcmp (opt.weight, "plain");
-    if (! D.same)
-      D.P = fit_data (pspec, c, j, xc, Sf.rgb(:,c));
-    endif
-    Ds{c} = D;
+    Ds{c} = fit_data (fspec, c, j, xc, Ss.rgb(:,c), sc(c), pspec, Sf.rgb(:,c), fname);
   endfor
   if (shared)
     blocks = {opt.channels(:)'};
@@ -102,7 +96,6 @@ function [models, info] = fit_model (S, wt, n0, def, nlobes, opt)
     endif
     D.def = def;
     D.nch = numel (B);
-    D.Xg = Xg;
     D.sc = sc(B);
     run = grow (D, nlobes, opt, t0);
     for k = 1:nlobes
@@ -245,21 +238,43 @@ function U = grow_starts (D, u, tries)
   endfor
 endfunction
 
-## The fit's model at most 10 times the data's maximum on the guard set
+## The fit's model finite and at most 10 times the data's maximum on the
+## data's groups
 function ok = guard_ok (D, u)
   P = fit_phys ("split", D, u);
   ok = all (isfinite (u));
   for c = 1:D.nch
-    g = model_core (D.def, P(:,c), D.Xg);
+    g = model_core (D.def, P(:,c), D.x);
     ok = ok && all (isfinite (g)) && max (g) <= 10 * max (D.ymax(c), realmin);
   endfor
 endfunction
 
-## In-plane pairs at 0.5 degrees up to the data's largest angle, both sides
-function X = plane_grid (zmin)
-  amax = acosd (max (min (zmin, 1), 0));
-  t = linspace (0, amax, max (2, ceil (amax / 0.5) + 1));
-  [ti, to] = ndgrid (t, [-fliplr(t(2:end)), t]);
-  X = [cosd(ti(:)), cosd(to(:)), cosd(ti(:) + to(:))];
-  X = X(X(:,1) > 0 & X(:,2) > 0,:);
+## The groups the fit runs on: samples equal in X = [cos ti, cos to, wi.wo]
+## (exact), or, with more than AUTO_GROUPS samples (or as "reduce" says), cells
+## of an n x n x n grid over (sqrt (theta_h), theta_d, |cos ti - cos to|)
+## (MERL's own spacing of theta_h: fine near the mirror direction) at the
+## weighted mean of their samples' X, taken with cos ti <= cos to (every model
+## here is reciprocal: f (wi, wo) = f (wo, wi))
+function [j, xc, how] = groups (X, wt, reduce)
+  AUTO_GROUPS = 20000;
+  AUTO_GRID = 64;
+  n = Inf;
+  if (isnumeric (reduce))
+    n = reduce;
+  elseif (strcmp (reduce, "auto") && rows (X) > AUTO_GROUPS)
+    n = AUTO_GRID;
+  endif
+  if (isinf (n))
+    [j, xc] = fit_reduce (X, wt, Inf);
+    how = "exact";
+    return;
+  endif
+  G = brdf_geom (X);
+  key = [floor(sqrt (acos (min (G.ch, 1)) / (pi/2)) * n), floor(acos (G.cd) / (pi/2) * n), ...
+         floor(abs (X(:,1) - X(:,2)) * n)];
+  [~, ~, j] = unique (min (key, n - 1), "rows");
+  Xs = [min(X(:,1), X(:,2)), max(X(:,1), X(:,2)), X(:,3)];
+  W = accumarray (j, wt);
+  xc = [accumarray(j, wt .* Xs(:,1)), accumarray(j, wt .* Xs(:,2)), accumarray(j, wt .* Xs(:,3))] ./ W;
+  how = sprintf ("grid %d", n);
 endfunction
