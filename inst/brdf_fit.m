@@ -113,20 +113,10 @@ function [model, info, models] = brdf_fit (S, type, nlobes, varargin)
   endif
   opt = fit_defaults (opt, S);
   opt = check_opts (opt, fname);
-  [S, wt] = check_table (S, fname, 1);
-  [S, n0] = fit_prior (S, opt.weight);
-  if (n0 < rows (S.wi) || rows (S.wi) < 4)
-    [S, wt] = check_table (S, fname, 4);
-  endif
+  [S, wt, n0] = fit_table (S, opt.weight, fname);
   pkg_load_optim ();
   [models, info] = fit_model (S, wt, n0, def, nlobes, opt);
-  model = models{nlobes};
-  if (isfield (S, "name") && ischar (S.name) && ! isempty (S.name))
-    model.name = S.name;
-    for k = 1:numel (models)
-      models{k}.name = S.name;
-    endfor
-  endif
+  [model, models] = fit_table (S, models{nlobes}, models);   # the table's name
 endfunction
 
 function opt = check_opts (opt, fname)

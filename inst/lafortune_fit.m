@@ -220,14 +220,8 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
                             "bounds", true, "channels", 1:3, "color", []));
   opt = fit_defaults (opt, S);
   opt = check_opts (opt, nlobes);
-  ## the table as lafortune_error checks it; with a scene table's prior,
-  ## once more with the prior's rows
-  [S, wt] = check_table (S, "lafortune_fit", 1);
-  [S, n0] = fit_prior (S, opt.weight);
-  if (n0 < rows (S.wi) || rows (S.wi) < 4)
-    ## the prior's rows too; 4 samples at least, the prior's included
-    [S, wt] = check_table (S, "lafortune_fit", 4);
-  endif
+  ## the table as lafortune_error checks it, with a scene table's prior
+  [S, wt, n0] = fit_table (S, opt.weight, "lafortune_fit");
   pkg_load_optim ();
 
   N = rows (S.wi);
@@ -344,13 +338,7 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
   if (! grow)
     models = {model};
   endif
-  ## the table's name goes with the models (exports carry it)
-  if (isfield (S, "name") && ischar (S.name) && ! isempty (S.name))
-    model.name = S.name;
-    for k = 1:numel (models)
-      models{k}.name = S.name;
-    endfor
-  endif
+  [model, models] = fit_table (S, model, models);   # the table's name
 endfunction
 
 ## One channel's data D (fit_data, scaled units) and its coarse grid R
