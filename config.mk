@@ -17,6 +17,14 @@ JOBS ?= 0
 # the best picture (the angle pairs the scene's pixels see, image weights);
 # `make reproduce` needs inplane, `make database` takes any of them
 METHODS ?= inplane hemisphere scene
+# the analytic models fitted by every method (the types of brdf_model ():
+# lafortune blinnphong ward cooktorrance ggx ashikhminshirley).  The
+# Lafortune model keeps the method's name (scene); another model makes a
+# method of its own, METHOD_MODEL (scene_ggx, inplane_shared_cooktorrance),
+# with its own fits, renders, rows and columns.  `make reproduce` (the
+# paper) fits lafortune; `make database MODELS="lafortune cooktorrance ggx"`
+# compares them (report.md, "Models compared")
+MODELS ?= lafortune
 LOBES ?= 1 2 3
 # grazing angles beyond this (degrees) are left out of the fits
 MAX_ANGLE ?= 80
@@ -105,3 +113,13 @@ TORUS_QUICK ?= 48 24
 FAIL_FLIP ?= 0.5
 FAIL_FLIP_GAIN ?= 0.05
 FAIL_FLIP_DROP ?= 0.002
+# `make database`: the metals among the MERL materials, for the report's
+# medians of metals and of the other materials apart (the split by which
+# Ngan et al. 2005 and Lavoue et al. 2021 discuss their model comparisons).
+# Neither paper's own list is kept in ../shared, so this one was made from
+# the MERL database's 100 names: its conductors, bare metals and alloys,
+# and hematite (an iron-oxide ore with a metallic lustre); not the metallic
+# paints (flakes under a clear coat), nor two-layer-gold and two-layer-silver
+# (coated).  Of the 26 materials of ../shared: aluminium, hematite, steel.
+# Names not in the run are ignored.
+METALS ?= alum-bronze aluminium black-oxidized-steel brass chrome chrome-steel grease-covered-steel hematite nickel ss440 steel tungsten-carbide

@@ -9,12 +9,16 @@
 ##
 ## @table @file
 ## @item table.csv
-## one row per material, fit method and lobe count: PSNR, FLIP, ΔE
+## one row per material, fit method and lobe count (and its model type,
+## @code{model}: METHODS crossed with MODELS, repro_method): PSNR, FLIP, ΔE
 ## (CIEDE2000) and the hue statistic of the fit's render with POV-Ray
 ## (@code{_pov}) and with rt_render (@code{_rt}) against the measured data
 ## rendered by the same renderer (img_compare), errors (rmse, log rmse and
 ## cosine-weighted rmse as Ngan et al. 2005, means over R, G, B, on each
-## method's table), fit time, render times and the model's parameters; a
+## method's table), fit time, render times, the model's size
+## (@code{params}: the numbers it holds, @code{json_bytes}: its JSON
+## file), its largest albedo (@code{albedo_max}, for the types brdf_fit
+## reports it of) and its parameters (the columns of every type's fields); a
 ## material whose file could not be read or processed gets one row with
 ## status @code{error} and the message.
 ## @item report.md
@@ -23,7 +27,10 @@
 ## that PSNR and FLIP rank differently, the materials where the recommended
 ## fit's FLIP rises with one more lobe (FAIL_FLIP_DROP), the materials where
 ## the Lafortune model fails (judged by FLIP: FAIL_FLIP, FAIL_FLIP_GAIN;
-## PSNR beside it), every material's numbers, times per stage, and the
+## PSNR beside it), the models compared (MODELS: the best model per
+## material and lobe count, medians per model for metals and non-metals,
+## sizes, energy, where Lafortune loses; db_models), every material's
+## numbers, times per stage, and the
 ## plots @file{figures/psnr-lobes.png} and @file{figures/flip-lobes.png}
 ## (PSNR and FLIP against the lobe count).
 ## @item gallery/index.html
@@ -84,53 +91,57 @@ function db_report ()
   Frt = X.flip.rt;
 
   ## --- table.csv
-  head = {"material", "method", "lobes", "status", "error", "psnr_db", "psnr_rt_db", "flip_pov", "flip_rt", ...
-          "deltae_pov", "deltae_rt", "hue_pov", "hue_rt"};
-  for t = c.methods
+  ## the methods' models, the tables their errors are on (the methods
+  ## without their models), the lobe fields of every model type fitted
+  mp = cellfun (@repro_method, c.methods);
+  err = unique ({mp.base}, "stable");
+  pf = {};
+  for t = unique ({mp.model}, "stable")
+    pf = [pf, setdiff(brdf_model (t{1}).fields(2:end), pf, "stable")];
+  endfor
+  head = {"material", "method", "model", "lobes", "status", "error", "psnr_db", "psnr_rt_db", "flip_pov", ...
+          "flip_rt", "deltae_pov", "deltae_rt", "hue_pov", "hue_rt"};
+  for t = err
     head = [head, strcat({"rmse_", "log_rmse_", "cos_rmse_"}, t{1})];
   endfor
-  head = [head, {"fit_time_s", "render_time_s", "measured_render_time_s", "rho_d_r", "rho_d_g", "rho_d_b"}];
+  head = [head, {"fit_time_s", "render_time_s", "measured_render_time_s", "params", "json_bytes", ...
+                 "albedo_max", "rho_d_r", "rho_d_g", "rho_d_b"}];
   chn = "rgb";
   for j = 1:max (c.lobes)
-    for p = {"cxy", "cz", "e"}
+    for p = pf
       for ch = 1:3
-        head{end+1} = sprintf ("%s%d_%s", p{1}, j, chn(ch));
+        head{end+1} = sprintf ("%s%d_%s", lower (p{1}), j, chn(ch));
       endfor
     endfor
   endfor
   rows = {strjoin(head, ",")};
   for i = 1:numel (mats)
     if (! D(i).ok)
-      rows{end+1} = csv_row ([{mats{i}, "", "", "error", D(i).error}, repmat({""}, 1, numel (head) - 5)]);
+      rows{end+1} = csv_row ([{mats{i}, "", "", "", "error", D(i).error}, repmat({""}, 1, numel (head) - 6)]);
       continue;
     endif
     Fi = D(i).rec.fit;
     R = D(i).rec.render_fits;
-    for m = c.methods
+    for q = 1:numel (c.methods)
+      m = c.methods(q);
       r = Fi.(m{1});
       for j = 1:nk
         k = c.lobes(j);
-        v = {mats{i}, m{1}, k, "ok", ""};
-        for q = {"psnr", "flip", "deltae", "hue"}
-          v = [v, {X.(q{1}).pov.(m{1})(i,j), X.(q{1}).rt.(m{1})(i,j)}];
+        v = {mats{i}, m{1}, mp(q).model, k, "ok", ""};
+        for q2 = {"psnr", "flip", "deltae", "hue"}
+          v = [v, {X.(q2{1}).pov.(m{1})(i,j), X.(q2{1}).rt.(m{1})(i,j)}];
         endfor
-        for t = c.methods
+        for t = err
           e = r.errors.(t{1});
           v = [v, {mean(e.rmse(k,:)), mean(e.log_rmse(k,:)), mean(e.cos_rmse(k,:))}];
         endfor
         md = lafortune_import ([repro_files("model", D(i).root, mats{i}, m{1}, k) ".json"]);
-        v = [v, {max(r.lobe_time(k,:)), R.(m{1})(j).pov_time, D(i).rec.render_measured.info.time_total}, ...
-             num2cell(md.rho_d(:)')];
-        for l = 1:max (c.lobes)
-          for p = {"Cxy", "Cz", "e"}
-            if (l <= k)
-              x = reshape (md.(p{1}), [], 3);
-              v = [v, num2cell(x(l,:))];
-            else
-              v = [v, {"", "", ""}];
-            endif
-          endfor
-        endfor
+        alb = "";
+        if (isfield (r, "albedo"))
+          alb = max (r.albedo(k,:));
+        endif
+        v = [v, {max(r.lobe_time(k,:)), R.(m{1})(j).pov_time, D(i).rec.render_measured.info.time_total, ...
+                 at(r, "params", k), at(r, "json_bytes", k), alb}, param_cells(md, k, pf, max (c.lobes))];
         rows{end+1} = csv_row (v);
       endfor
     endfor
@@ -138,13 +149,12 @@ function db_report ()
       ## the published fit (PUBLISHED): its measures, render time, parameters
       r = R.ngan2005(1);
       md = lafortune_ngan (c.published, mats{i});
-      v = {mats{i}, "ngan2005", 1, "ok", ""};
+      v = {mats{i}, "ngan2005", "lafortune", 1, "ok", ""};
       for q = {"psnr", "flip", "deltae", "hue"}
         v = [v, {r.([q{1} "_pov"]), r.([q{1} "_rt"])}];
       endfor
-      v = [v, repmat({""}, 1, 3 * numel (c.methods)), {"", r.pov_time, D(i).rec.render_measured.info.time_total}, ...
-           num2cell(md.rho_d(:)'), num2cell(md.Cxy(1,:)), num2cell(md.Cz(1,:)), num2cell(md.e(1,:))];
-      v = [v, repmat({""}, 1, numel (head) - numel (v))];
+      v = [v, repmat({""}, 1, 3 * numel (err)), {"", r.pov_time, D(i).rec.render_measured.info.time_total, ...
+                                                  "", "", ""}, param_cells(md, 1, pf, max (c.lobes))];
       rows{end+1} = csv_row (v);
     endif
   endfor
@@ -202,7 +212,7 @@ function db_report ()
     for j = 1:nk
       x = P.(m{1})(ok,j);
       med = @(q, r) median (X.(q).(r).(m{1})(ok,j));
-      cr = arrayfun (@(i) mean (D(i).rec.fit.(m{1}).errors.(m{1}).cos_rmse(c.lobes(j),:)), ok);
+      cr = arrayfun (@(i) mean (D(i).rec.fit.(m{1}).errors.(repro_method (m{1}).base).cos_rmse(c.lobes(j),:)), ok);
       if (isempty (x))
         L{end+1} = sprintf ("| %s | %d |%s", label_of (label, m{1}), c.lobes(j), repmat (" - |", 1, 11));
         continue;
@@ -258,7 +268,7 @@ function db_report ()
   L{end+1} = "## Where the Lafortune model fails";
   L{end+1} = "";
   L{end+1} = sprintf (["A material fails when its best fit (the lowest FLIP of its POV-Ray renders, over the " ...
-                       "methods and lobe counts) has FLIP above %g (FAIL_FLIP: the picture looks wrong), or when " ...
+                       "Lafortune model's methods and lobe counts) has FLIP above %g (FAIL_FLIP: the picture looks wrong), or when " ...
                        "the method of that best fit looks wrong with %d lobe%s (FLIP above %g) and going to %d " ...
                        "lobes lowers its FLIP by less than %g (FAIL_FLIP_GAIN: more lobes do not help, as the " ...
                        "paper found by PSNR for red plastic; a material that %d lobe%s already render%s right " ...
@@ -269,13 +279,14 @@ function db_report ()
                       ifelse (min (c.lobes) == 1, "s", ""), c.fail_flip_drop);
   L{end+1} = "";
   fails = {};
-  for i = ok
-    fb = cellfun (@(m) min (F.(m)(i,:)), c.methods);
+  lm = c.methods(strcmp ({mp.model}, "lafortune"));      # the Lafortune model's methods
+  for i = ifelse (isempty (lm), [], ok)
+    fb = cellfun (@(m) min (F.(m)(i,:)), lm);
     [best, b] = min (fb);
     if (! isfinite (best))
       continue;
     endif
-    mb = c.methods{b};
+    mb = lm{b};
     [~, jb] = min (F.(mb)(i,:));
     gain = F.(mb)(i,1) - F.(mb)(i,end);
     why = {};
@@ -290,11 +301,13 @@ function db_report ()
     endif
     fails{end+1} = struct ("material", mats{i}, "reason", strjoin (why, "; "), "method", mb,
                            "lobes", c.lobes(jb), "flip", best, "flip_rt", Frt.(mb)(i,jb),
-                           "psnr", P.(mb)(i,jb), "best_psnr", max (cellfun (@(m) max (P.(m)(i,:)), c.methods)),
+                           "psnr", P.(mb)(i,jb), "best_psnr", max (cellfun (@(m) max (P.(m)(i,:)), lm)),
                            "flip_first", F.(mb)(i,1), "flip_last", F.(mb)(i,end),
                            "psnr_first", P.(mb)(i,1), "psnr_last", P.(mb)(i,end));
   endfor
-  if (isempty (fails))
+  if (isempty (lm))
+    L{end+1} = sprintf ("The Lafortune model is not among MODELS (%s).", strjoin (c.models, " "));
+  elseif (isempty (fails))
     L{end+1} = sprintf ("No material fails (%d processed).", numel (ok));
   else
     L{end+1} = sprintf ("%d of the %d processed materials fail:", numel (fails), numel (ok));
@@ -349,6 +362,10 @@ function db_report ()
     endfor
   endif
   L{end+1} = "";
+
+  ## --- the models compared (MODELS)
+  [L, sm.models] = db_models (L, c, D, ok, mats, X);
+
   L{end+1} = "## Every material";
   L{end+1} = "";
   L{end+1} = sprintf (["One row per material and method; each cell gives the %s-lobe fits in turn, " ...
@@ -401,7 +418,8 @@ function db_report ()
   sm.hue_rt = X.hue.rt;
   sm.settings = struct ("scene", scene.name, "width", scene.width, "height", scene.height,
                         "spp", scene.spp, "pov_antialias", c.pov_aa, "max_angle", c.max_angle,
-                        "lobes", c.lobes, "methods", {c.methods}, "quick", c.quick,
+                        "lobes", c.lobes, "methods", {c.methods}, "models", {c.models},
+                        "metals", {c.metals}, "quick", c.quick,
                         "fail_flip", c.fail_flip, "fail_flip_gain", c.fail_flip_gain,
                         "fail_flip_drop", c.fail_flip_drop);
   repro_save (repro_files ("summary", c.results, ""), sm);
@@ -465,6 +483,31 @@ function [L, S] = published_section (L, D, ok, mats, X, c)
                         S.deltae_pov(n), S.hue_pov(n), sp, sf);
   endfor
   L{end+1} = "";
+endfunction
+
+## R.(F)(K), "" when the record lacks it
+function x = at (r, f, k)
+  x = "";
+  if (isfield (r, f) && numel (r.(f)) >= k)
+    x = r.(f)(k);
+  endif
+endfunction
+
+## the parameter cells of table.csv of the model MD with K lobes: rho_d,
+## then per lobe 1 .. NL the lobe fields PF (of every model type fitted),
+## empty for the fields its type has not and the lobes it has not
+function v = param_cells (md, k, pf, nl)
+  v = num2cell (md.rho_d(:)');
+  for l = 1:nl
+    for p = pf
+      if (l <= k && isfield (md, p{1}))
+        x = reshape (md.(p{1}), [], 3);
+        v = [v, num2cell(x(l,:))];
+      else
+        v = [v, {"", "", ""}];
+      endif
+    endfor
+  endfor
 endfunction
 
 ## The values of FIELD in the struct array R (one per lobe count) as a

@@ -33,8 +33,16 @@ function R = db_sheet (material)
   nk = numel (c.lobes);
   label = struct ("inplane", "in-plane", "hemisphere", "hemisphere", "scene", "scene",
                   "ngan2005", "Ngan 2005");
-  ## one panel per image, laid out by hand: image aspect kept, room for a title
-  pw = 256;                     # room for "hemisphere 3: 46.3 dB, FLIP 0.833, dE 24.3"
+  names = rows_;
+  for i = 1:nm
+    if (isfield (label, rows_{i}))
+      names{i} = label.(rows_{i});
+    endif
+  endfor
+  ## one panel per image, laid out by hand: image aspect kept, room for a
+  ## title: 256 pixels hold "hemisphere 3: 46.3 dB, FLIP 0.833, dE 24.3",
+  ## a longer method's name (hemisphere_cooktorrance) widens every panel
+  pw = max (256, ceil (5.9 * (max (cellfun (@numel, names)) + 33)));
   ph = round (pw * c.size(1) / c.size(2));
   tt = 36;
   W = pw * (1 + nk);
@@ -42,10 +50,7 @@ function R = db_sheet (material)
   h = figure ("visible", "off", "position", [0, 0, W, H]);
   for i = 1:nm
     mth = rows_{i};
-    name = mth;
-    if (isfield (label, mth))
-      name = label.(mth);
-    endif
+    name = names{i};
     y = (nm - i) * (ph + tt) / H;
     for j = 0:numel (lobes{i})
       axes ("position", [j * pw / W + 0.003, y + 0.003, pw / W - 0.006, ph / H - 0.006]);

@@ -16,7 +16,10 @@
 ## (DATA_DIR: where the steps read MATERIAL.binary; default RESULTS/data),
 ## @code{merl_dir} (MERL_DIR), @code{quick}, @code{database} (DATABASE=1: the
 ## steps of `make database`, which record a failure instead of stopping),
-## @code{mesh}, @code{scene}, @code{materials}, @code{methods}, @code{lobes},
+## @code{mesh}, @code{scene}, @code{materials}, @code{methods} (METHODS
+## crossed with MODELS by repro_method: @code{scene}, @code{scene_ggx},
+## ...), @code{models} (MODELS, the model types), @code{metals} (METALS:
+## the database report's split), @code{lobes},
 ## @code{max_angle}, @code{hemi_samples}, @code{size}, @code{spp},
 ## @code{spp_study}, @code{pov_aa}, @code{pov_threads}, @code{torus}, @code{fail_flip},
 ## @code{fail_flip_gain}, @code{fail_flip_drop}, @code{published} (a table of
@@ -37,7 +40,12 @@ function c = repro_config (file)
   get = @(name) setting (v, name, c.quick);
   c.scene = get ("SCENE");
   c.materials = words (get ("MATERIALS"));
-  c.methods = words (get ("METHODS"));
+  c.models = words (get ("MODELS"));
+  if (isempty (c.models))
+    error ("lafortune:badConfig", "repro_config: MODELS is empty: expected model types, such as lafortune");
+  endif
+  c.methods = repro_method (words (get ("METHODS")), c.models);
+  c.metals = words (get ("METALS"));
   c.lobes = number (get ("LOBES"), "LOBES");
   c.max_angle = number (get ("MAX_ANGLE"), "MAX_ANGLE");
   c.hemi_samples = number (get ("HEMI_SAMPLES"), "HEMI_SAMPLES");

@@ -70,10 +70,8 @@ function repro_figures ()
     endfor
     paper = NaN (nm, nl);
     paper(strcmp (mths, "inplane"),:) = repro_paper (c, mat);
-    rowname = struct ("inplane", "in-plane fits", "hemisphere", "hemisphere fits",
-                      "scene", "scene fits (recommended)");
     done (plot_renders (imgs, [{"measured"}, lobe_names], psnr, "paper", paper, "map", "flip",
-                        "rows", cellfun (@(m) rowname.(m), mths, "uniformoutput", false),
+                        "rows", cellfun (@row_name, mths, "uniformoutput", false),
                         "width", min (256, max (180, columns (ref))),   # the paper's 256: 1:1
                         "title", sprintf ("%s: POV-Ray, %d x %d, anti-aliasing %d x %d",
                                           mat, columns (ref), rows (ref), c.pov_aa, c.pov_aa),
@@ -128,6 +126,16 @@ function study_figure (c, mat, file, q)
                     "highlight", find (strcmp (weights, "relative")), "panels", names, "ylabel", ylab,
                     "title", sprintf ("%s: %s of each fit's POV-Ray render, by table and weighting", mat, what),
                     "file", file));
+endfunction
+
+## a row of the renders' figure: its method (scene_ggx: "scene_ggx fits")
+function s = row_name (m)
+  rowname = struct ("inplane", "in-plane fits", "hemisphere", "hemisphere fits",
+                    "scene", "scene fits (recommended)");
+  s = [m " fits"];
+  if (isfield (rowname, m))
+    s = rowname.(m);
+  endif
 endfunction
 
 function done (hf)

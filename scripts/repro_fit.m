@@ -5,7 +5,10 @@
 ## @deftypefn {} {@var{R} =} repro_fit (@var{material})
 ## Fit step of `make reproduce` and `make database` (run by repro_step, which
 ## writes @var{R} to RESULTS/fit/MATERIAL.json): fit 1 to max(LOBES) lobes
-## per channel to DATA_DIR/MATERIAL.binary with each method of METHODS:
+## per channel to DATA_DIR/MATERIAL.binary with each method of METHODS,
+## for each model type of MODELS (@code{brdf_fit}; a method without a model
+## in its name fits the Lafortune model, @code{scene_ggx} GGX: see
+## repro_method); the tables:
 ## @code{inplane}, the paper's way (plane of incidence, grazing angles left
 ## out), @code{hemisphere}, the whole valid hemisphere (subsampled to
 ## HEMI_SAMPLES, weighted by solid angle), and @code{scene}, the recommended
@@ -15,12 +18,20 @@
 ## to RESULTS/fit/ MATERIAL-METHOD-K.json, .txt and .brdf (BRDF Explorer).
 ##
 ## @var{R}: @code{lobes}, and per method (@code{R.inplane},
-## @code{R.hemisphere}): @code{samples}, @code{weight} and @code{color} (the
+## @code{R.hemisphere}, @code{R.scene_ggx}): @code{model} (the type),
+## @code{samples}, @code{weight} and @code{color} (the
 ## fit's), @code{time}, @code{iterations},
 ## @code{converged}, @code{lobe_time} (K x 3), @code{errors.TABLE.rmse},
 ## @code{rel_rmse}, @code{log_rmse}, @code{cos_rmse} (K x 3, of each model
-## on each method's table; cos_rmse is weighted by cos theta_i as in Ngan et
-## al. 2005; the models themselves are in their files, MATERIAL-METHOD-K.json)
+## on each method's table, TABLE a method of METHODS without its model;
+## cos_rmse is weighted by cos theta_i as in Ngan et
+## al. 2005; the models themselves are in their files, MATERIAL-METHOD-K.json),
+## @code{params} (1 x K: the numbers a model holds, those of its type's
+## fields, @code{brdf_model (type).fields}), @code{json_bytes} (1 x K: the
+## size of its JSON file), for the types brdf_fit reports an albedo of
+## @code{albedo} (K x 3: the largest directional albedo over the incidence
+## angles brdf_fit checks, 0, 5, ..., 85 and 89 degrees; above 1 the fit
+## reflects more light than it receives),
 ## and @code{trace} (3 x 1 struct
 ## array, one per channel: @code{channel}, @code{time}, @code{rmse}: the
 ## error of the best fit so far against run time).
@@ -29,22 +40,34 @@ function R = repro_fit (material)
   c = repro_config ();
   warning ("off", "lafortune:notConverged");
   b = merl_read (repro_files ("merl", c.data_dir, material));
-  for method = c.methods
-    [S.(method{1}), O.(method{1})] = repro_table (b, method{1}, c, c.hemi_samples);   # (an unknown name is an error there)
+  ## every method's table and fit options (an unknown name is an error
+  ## there), each table made once (deterministic: the same as made again);
+  ## the errors are reported on the tables of the methods without their
+  ## models (ERR: their names)
+  P = cellfun (@repro_method, c.methods);
+  err = unique ({P.base}, "stable");
+  S = struct ();
+  for i = 1:numel (P)
+    if (! isfield (S, P(i).table))
+      S.(P(i).table) = repro_table (b, P(i).table, c, c.hemi_samples);
+    endif
   endfor
   outdir = fileparts (repro_files ("model", c.results, material, "", 1));
   if (! isfolder (outdir))
     mkdir (outdir);
   endif
   R = struct ("material", material, "lobes", c.lobes);
-  for method = c.methods
-    mth = method{1};
-    printf ("reproduce: [%s] fitting 1..%d lobes, %s (%d samples)\n", material,
-            max (c.lobes), mth, rows (S.(mth).wi));
+  for i = 1:numel (c.methods)
+    mth = c.methods{i};
+    p = P(i);
+    def = brdf_model (p.model);           # an unknown type is an error here
+    St = S.(p.table);
+    printf ("reproduce: [%s] fitting 1..%d lobes, %s (%s, %d samples)\n", material,
+            max (c.lobes), mth, def.title, rows (St.wi));
     fflush (stdout);
-    [~, info, models] = lafortune_fit (S.(mth), max (c.lobes), O.(mth){:});
-    r = struct ("samples", rows (S.(mth).wi), "weight", info.weight, "color", info.color, "time", info.time,
-                "iterations", info.iterations, "converged", info.converged,
+    [~, info, models] = brdf_fit (St, p.model, max (c.lobes), p.opts{:});
+    r = struct ("model", p.model, "samples", rows (St.wi), "weight", info.weight, "color", info.color,
+                "time", info.time, "iterations", info.iterations, "converged", info.converged,
                 "lobe_time", info.lobe_time);
     for k = c.lobes
       m = models{k};
@@ -53,15 +76,29 @@ function R = repro_fit (material)
       lafortune_export (m, [base ".json"], "json");
       lafortune_export (m, [base ".txt"], "text");
       lafortune_export (m, [base ".brdf"], "brdfexplorer");
-      ## errors of this model on both tables
-      for t = c.methods
-        e = model_errors (m, S.(t{1}));
+      ## its size: the numbers of its type's fields, and its JSON file
+      r.params(k) = sum (cellfun (@(f) numel (m.(f)), def.fields));
+      r.json_bytes(k) = dir ([base ".json"]).bytes;
+      ## errors of this model on every method's table
+      for t = err
+        e = model_errors (m, S.(repro_method (t{1}).table));
         r.errors.(t{1}).rmse(k,:) = e.rmse;
         r.errors.(t{1}).rel_rmse(k,:) = e.rel_rmse;
         r.errors.(t{1}).log_rmse(k,:) = e.log_rmse;
         r.errors.(t{1}).cos_rmse(k,:) = e.cos_rmse;
       endfor
     endfor
+    ## energy: brdf_fit reports the albedo of the physically based types'
+    ## fit with the most lobes; the fits with fewer lobes at the same angles
+    if (isfield (info, "albedo"))
+      for k = c.lobes
+        if (k == max (c.lobes))
+          r.albedo(k,:) = info.albedo;
+        else
+          r.albedo(k,:) = max (brdf_albedo (models{k}, [0:5:85, 89]), [], 1);
+        endif
+      endfor
+    endif
     ## the error-against-time traces, thinned for the record
     chn = "RGB";
     for ch = 1:3
@@ -71,7 +108,7 @@ function R = repro_fit (material)
     endfor
     R.(mth) = r;
     printf ("reproduce: [%s] %s rmse (mean RGB) for %s lobes: %s; %.1f s\n", material, mth,
-            mat2str (c.lobes), mat2str (mean (r.errors.(mth).rmse, 2)', 4), sum (info.time));
+            mat2str (c.lobes), mat2str (mean (r.errors.(p.base).rmse, 2)', 4), sum (info.time));
   endfor
 endfunction
 
@@ -86,5 +123,5 @@ endfunction
 
 ## the model that is 0 everywhere: its plain error is the rms of the data
 function z = zero_model (m)
-  z = struct ("rho_d", [0 0 0], "Cxy", zeros (0, 3), "Cz", zeros (0, 3), "e", zeros (0, 3));
+  z = brdf_model ("lafortune", "rho_d", 0);      # no lobe
 endfunction

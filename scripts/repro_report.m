@@ -4,8 +4,9 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {} repro_report ()
 ## Last step of `make reproduce`: RESULTS/report.md (our numbers beside the
-## paper's, fit errors and times, error against run time for fitting and
-## rendering) and RESULTS/summary.json (the same numbers for machines).
+## paper's, the best model of each material (MODELS, repro_models), fit
+## errors and times, error against run time for fitting and rendering) and
+## RESULTS/summary.json (the same numbers for machines).
 ## @end deftypefn
 function repro_report ()
   c = repro_config ();
@@ -57,9 +58,12 @@ function repro_report ()
   need_inplane (c);
   mlabel = struct ("inplane", "in-plane", "hemisphere", "hemisphere", "scene", "scene (recommended)");
   others = c.methods(! strcmp (c.methods, "inplane"));
+  ## the tables of the fits' errors: the methods without their models
+  tables = unique (cellfun (@(m) repro_method (m).base, c.methods, "uniformoutput", false), "stable");
+  otables = tables(! strcmp (tables, "inplane"));
   hdr = "| material | lobes | paper | in-plane fit, POV-Ray | in-plane fit, rt_render |";
   for m = others
-    hdr = [hdr sprintf(" %s fit, POV-Ray / rt_render |", mlabel.(m{1}))];
+    hdr = [hdr sprintf(" %s fit, POV-Ray / rt_render |", label_of (mlabel, m{1}))];
   endfor
   L{end+1} = [hdr " rt_render vs POV-Ray (same model) |"];
   L{end+1} = ["|---|---|---|---|---|" repmat("---|", 1, numel (others)) "---|"];
@@ -96,7 +100,7 @@ function repro_report ()
           s.([q{1} "_" m{1} "_" r{1}]) = [R.(m{1}).(f)];
         endfor
       endfor
-      s.(["fit_rmse_" m{1}]) = mean (F.(m{1}).errors.(m{1}).rmse, 2)';
+      s.(["fit_rmse_" m{1}]) = mean (F.(m{1}).errors.(repro_method (m{1}).base).rmse, 2)';
       s.(["fit_time_" m{1}]) = max (F.(m{1}).lobe_time, [], 2)';
     endfor
     s.render_time_measured = M.info.time_total;
@@ -122,6 +126,8 @@ function repro_report ()
   L{end+1} = "Each fit's render has its HDR-FLIP error map (per pixel; black: no visible difference, white: the largest) in the corner, and its FLIP under its PSNR.";
   L{end+1} = "";
   L = perceptual_section (c, L, D, mlabel);
+  ## --- the models: the best of each material
+  [L, sm.best_model] = models_section (c, L, D);
   ## --- the study
   if (c.study)
     L = study_section (c, L);
@@ -135,11 +141,11 @@ function repro_report ()
               "Fit time is cumulative: the k-lobe fit grows from the (k-1)-lobe one."];
   L{end+1} = "";
   hdr = "| material | fit | lobes | rmse (in-plane table) | relative rmse | log rmse | cosine-weighted rmse |";
-  for m = others
+  for m = otables
     hdr = [hdr sprintf(" rmse (%s table) |", m{1})];
   endfor
   L{end+1} = [hdr " fit time (s) |"];
-  L{end+1} = ["|---|---|---|---|---|---|---|" repmat("---|", 1, numel (others)) "---|"];
+  L{end+1} = ["|---|---|---|---|---|---|---|" repmat("---|", 1, numel (otables)) "---|"];
   for i = 1:numel (c.materials)
     mat = c.materials{i};
     F = D.(fieldname (mat)).F;
@@ -149,7 +155,7 @@ function repro_report ()
         row = sprintf ("| %s | %s | %d | %.4g | %.4g | %.4g | %.4g |", mat, mth{1}, k,
                        mean (r.errors.inplane.rmse(k,:)), mean (r.errors.inplane.rel_rmse(k,:)),
                        mean (r.errors.inplane.log_rmse(k,:)), mean (r.errors.inplane.cos_rmse(k,:)));
-        for m = others
+        for m = otables
           row = [row sprintf(" %.4g |", mean (r.errors.(m{1}).rmse(k,:)))];
         endfor
         L{end+1} = [row sprintf(" %.2f |", max (r.lobe_time(k,:)))];
@@ -247,6 +253,53 @@ function need_inplane (c)
   endif
 endfunction
 
+## the label of method M (its name when LABEL has none)
+function s = label_of (label, m)
+  s = m;
+  if (isfield (label, m))
+    s = label.(m);
+  endif
+endfunction
+
+## the best model of each material at each lobe count, by the FLIP of the
+## POV-Ray renders, each model's best over the methods (repro_models)
+function [L, S] = models_section (c, L, D)
+  mats = c.materials;
+  F = struct ();
+  for m = c.methods
+    F.(m{1}) = nan (numel (mats), numel (c.lobes));
+    for i = 1:numel (mats)
+      F.(m{1})(i,:) = [D.(fieldname (mats{i})).R.(m{1}).flip_pov];
+    endfor
+  endfor
+  [M, B] = repro_models (c, F);
+  L{end+1} = "## The best model";
+  L{end+1} = "";
+  L{end+1} = sprintf (["The models of MODELS (%s), each fitted by every method (`brdf_fit`), judged by the FLIP " ...
+                       "of their POV-Ray renders: per model the best fit over the methods (its FLIP and method), " ...
+                       "and the model with the lowest FLIP (`make database MODELS=\"lafortune cooktorrance ggx\"` " ...
+                       "compares them over a database)."], strjoin ({M.model}, ", "));
+  L{end+1} = "";
+  hdr = "| material | lobes |";
+  for t = 1:numel (M)
+    hdr = [hdr sprintf(" %s: FLIP (method) |", M(t).model)];
+  endfor
+  L{end+1} = [hdr " best model |"];
+  L{end+1} = ["|---|---|" repmat("---|", 1, numel (M)) "---|"];
+  S = struct ();
+  for i = 1:numel (mats)
+    for j = 1:numel (c.lobes)
+      row = sprintf ("| %s | %d |", mats{i}, c.lobes(j));
+      for t = 1:numel (M)
+        row = [row sprintf(" %.4f (%s) |", M(t).flip(i,j), M(t).method{i,j})];
+      endfor
+      L{end+1} = [row sprintf(" **%s** |", B.model{i,j})];
+    endfor
+    S.(fieldname (mats{i})) = struct ("model", {B.model(i,:)}, "method", {B.method(i,:)}, "flip", B.flip(i,:));
+  endfor
+  L{end+1} = "";
+endfunction
+
 function f = fieldname (mat)
   f = strrep (mat, "-", "_");
 endfunction
@@ -285,7 +338,7 @@ function L = perceptual_section (c, L, D, mlabel)
       for j = 1:numel (c.lobes)
         r = R.(m{1})(j);
         L{end+1} = sprintf ("| %s | %s | %d | %.2f / %.2f | %.4f / %.4f | %.2f / %.2f | %.1f / %.1f |",
-                            mat, mlabel.(m{1}), c.lobes(j), r.psnr_pov, r.psnr_rt, r.flip_pov, r.flip_rt,
+                            mat, label_of (mlabel, m{1}), c.lobes(j), r.psnr_pov, r.psnr_rt, r.flip_pov, r.flip_rt,
                             r.deltae_pov, r.deltae_rt, r.hue_pov, r.hue_rt);
       endfor
     endfor

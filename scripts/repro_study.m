@@ -136,10 +136,21 @@ function R = repro_study (material)
   R = struct ("material", material, "light_b", sb.light.direction, "methods", M);
 endfunction
 
-## the same parameters (to 1e-12 relative): one render serves both
+## the same model: the same fields (the type too), every parameter the
+## same to 1e-12 relative (the name aside): one render serves both
 function tf = same_model (a, b)
-  tf = isequal (size (a.e), size (b.e)) ...
-       && all (abs ([a.rho_d(:); a.Cxy(:); a.Cz(:); a.e(:)] - [b.rho_d(:); b.Cxy(:); b.Cz(:); b.e(:)])
-               <= 1e-12 * max (1, abs ([a.rho_d(:); a.Cxy(:); a.Cz(:); a.e(:)])));
+  f = sort (setdiff (fieldnames (a), {"name"}));
+  tf = isequal (f, sort (setdiff (fieldnames (b), {"name"})));
+  for i = 1:numel (f)
+    if (! tf)
+      break;
+    endif
+    x = a.(f{i});
+    y = b.(f{i});
+    if (ischar (x) || ischar (y))
+      tf = isequal (x, y);
+    else
+      tf = isequal (size (x), size (y)) && all (abs (x(:) - y(:)) <= 1e-12 * max (1, abs (x(:))));
+    endif
+  endfor
 endfunction
-

@@ -13,6 +13,11 @@
 ##   - a rerun does no work and rewrites nothing;
 ##   - a change to inst/pov_render.m (make -W) re-runs only the fits' renders
 ##     and what follows, not the fits nor the measured-data renders;
+##   - the models compared (MODELS="lafortune ggx", in-plane and hemisphere
+##     methods, METALS=red-plastic): rows per model, the report's section
+##     "Models compared" (best model per material, medians of metals and
+##     non-metals, sizes, energy, where Lafortune loses), and the Lafortune
+##     rows equal to those of the MODELS=lafortune run;
 ##   - GNU parallel over ssh (HOSTS=, a real OpenSSH server started by
 ##     test/cluster.sh on 127.0.0.1 with throwaway keys, two host names) gives
 ##     the same table as the local run; a remote Octave killed with kill -9
@@ -201,7 +206,11 @@
 %!   npub = 2 * (exist (fullfile (top, "..", "shared", "data", "ngan2005", "lafortune-1lobe.tsv"), "file") == 2);
 %!   ## head, 2 materials x 3 methods x 2 lobe counts, the published fits, 1 error
 %!   assert (rows (T), 1 + 2 * 3 * 2 + npub + 1);
-%!   assert (nnz (strcmp (T(:,2), "ngan2005") & strcmp (T(:,3), "1")), npub);
+%!   col = @(n) find (strcmp (T(1,:), n));
+%!   assert ([col("method"), col("model"), col("lobes"), col("status"), col("error")], 2:6);
+%!   assert (nnz (strcmp (T(:,2), "ngan2005") & strcmp (T(:,4), "1")), npub);
+%!   ## one model, Lafortune's
+%!   assert (unique (T(strcmp (T(:,5), "ok"),3)), {"lafortune"});
 %!   rep = fileread (fullfile (db, "report.md"));
 %!   if (npub)
 %!     assert (! isempty (regexp (rep, ["By FLIP the recommended 1-lobe fit \\(scene\\) is better than the " ...
@@ -212,9 +221,9 @@
 %!   assert (nnz (strcmp (T(:,2), "scene")), 2 * 2);   # the recommended fit is a method
 %!   k = strcmp (T(:,1), "truncated");
 %!   assert (nnz (k), 1);
-%!   assert (T{k,4}, "error");
-%!   assert (! isempty (strfind (T{k,5}, "truncated")), T{k,5});
-%!   assert (all (strcmp (T(! k & ! strcmp (T(:,1), "material"),4), "ok")));
+%!   assert (T{k,5}, "error");
+%!   assert (! isempty (strfind (T{k,6}, "truncated")), T{k,6});
+%!   assert (all (strcmp (T(! k & ! strcmp (T(:,1), "material"),5), "ok")));
 %!   rep = fileread (fullfile (db, "report.md"));
 %!   assert (! isempty (strfind (rep, "**truncated**: fit: merl_read")));
 %!   ## each method's materials whose render falls with one more lobe
@@ -230,7 +239,7 @@
 %!   assert (! isempty (regexp (rep, ["\\| in-plane \\(the paper's method\\) \\| 2 \\| \\d+\\.\\d\\d \\| " ...
 %!                                    "\\d\\.\\d{3} \\| \\d+\\.\\d\\d \\| \\d+\\.\\d \\|"])), rep);
 %!   ## FLIP, Delta E (CIEDE2000) and hue beside PSNR in table.csv, both renderers
-%!   okr = strcmp (T(:,4), "ok");
+%!   okr = strcmp (T(:,5), "ok");
 %!   for q = {"flip", "deltae", "hue"}
 %!     for r = {"pov", "rt"}
 %!       col = find (strcmp (T(1,:), [q{1} "_" r{1}]));
@@ -290,6 +299,9 @@
 %!   assert (! isempty (regexp (txt, "\\[red-plastic\\] POV-Ray render")), txt);
 %!   assert (isempty (regexp (txt, "fitting|rendering the measured")), txt);
 %!   assert (isequal (__table (fullfile (db, "table.csv")), T));
+%!   ## the models section with one model
+%!   assert (! isempty (strfind (rep, "Only the Lafortune model was fitted (MODELS = lafortune)")), rep);
+%!   assert (! isempty (regexp (rep, "\\| lafortune \\| 2 \\| 21 \\| 168 \\| \\d+ \\| 0\\.\\d{3} \\| - \\| 0\\.\\d{3} \\|")), rep);
 
 %! unwind_protect_cleanup
 %!   if (exist (pidf, "file"))     # a run this test started and could not stop
@@ -298,6 +310,84 @@
 %!   endif
 %! end_unwind_protect
 
+
+%!test
+%! ## the models compared: MODELS="lafortune ggx" with the in-plane and
+%! ## hemisphere methods (a GGX fit of a scene table takes 30 s or more),
+%! ## red-plastic counted as a metal (METALS) for the split
+%! assert (! isempty (T), "the local run above failed");
+%! addpath (fullfile (top, "scripts"));
+%! unwind_protect
+%!   ## the method names: TABLE[_COLOR][_MODEL], METHODS crossed with MODELS
+%!   p = repro_method ("inplane_shared_ggx");
+%!   assert ({p.table, p.color, p.model, p.base, p.opts}, {"inplane", "shared", "ggx", "inplane_shared", {"color", "shared"}});
+%!   p = repro_method ("scene");
+%!   assert ({p.table, p.color, p.model, p.base}, {"scene", "", "lafortune", "scene"});
+%!   assert (repro_method ({"inplane", "scene_shared", "hemisphere_ward"}, {"lafortune", "ggx"}),
+%!           {"inplane", "scene_shared", "hemisphere_ward", "inplane_ggx", "scene_shared_ggx"});
+%!   fail ('repro_method ("scene_lafortune")', "unknown method");
+%!   fail ('repro_method ("scene_shared_ggx_ward")', "unknown method");
+%! unwind_protect_cleanup
+%!   rmpath (fullfile (top, "scripts"));
+%! end_unwind_protect
+%! db = fullfile (out, "db-models");
+%! [st, txt] = __make (top, db, merl, "-j2 database MODELS='lafortune ggx' METHODS='inplane hemisphere' METALS=red-plastic");
+%! assert (st == 0, "%s", txt);
+%! U = __table (fullfile (db, "table.csv"));
+%! col = @(n) find (strcmp (U(1,:), n));
+%! okr = strcmp (U(:,col("status")), "ok");
+%! npub = nnz (strcmp (T(:,2), "ngan2005"));
+%! ## 2 materials x 2 methods x 2 models x 2 lobe counts, the published fits, the truncated file
+%! assert (rows (U), 1 + 2 * 2 * 2 * 2 + npub + 1);
+%! for m = {"inplane_ggx", "hemisphere_ggx"}
+%!   r = strcmp (U(:,2), m{1});
+%!   assert (nnz (r), 2 * 2, m{1});
+%!   assert (all (strcmp (U(r,col("model")), "ggx")));
+%!   ## the numbers a model holds, from its type's fields; its albedo
+%!   k = str2double (U(r,col("lobes")));
+%!   nf = numel (brdf_model ("ggx").fields);
+%!   assert (str2double (U(r,col("params"))), 3 + 3 * (nf - 1) * k);
+%!   assert (all (str2double (U(r,col("json_bytes"))) > 100));
+%!   a = str2double (U(r,col("albedo_max")));
+%!   assert (all (isfinite (a) & a > 0), mat2str (a));
+%!   v = str2double (U(r,col("flip_pov")));
+%!   assert (all (v > 0 & v < 1), mat2str (v));
+%!   assert (all (isfinite (str2double (U(r,col("alpha1_g"))))));
+%!   assert (all (cellfun ("isempty", U(r,col("cxy1_g")))));
+%! endfor
+%! ## the Lafortune rows (and the error row) are those of the MODELS=lafortune run, column by column
+%! [in, cu] = ismember (T(1,:), U(1,:));
+%! assert (nnz (! in), 3);                    # rmse, log_rmse, cos_rmse on the scene table
+%! lt = ismember (T(:,2), {"method", "inplane", "hemisphere", "ngan2005"}) | strcmp (T(:,1), "truncated");
+%! lu = ismember (U(:,2), {"method", "inplane", "hemisphere", "ngan2005"}) | strcmp (U(:,1), "truncated");
+%! assert (isequal (U(lu,cu(in)), T(lt,in)));
+%! ## the report's section
+%! rep = fileread (fullfile (db, "report.md"));
+%! assert (! isempty (strfind (rep, "## Models compared")), rep);
+%! assert (! isempty (strfind (rep, "Metals (METALS in config.mk): red-plastic; the other 1 processed materials are the non-metals.")), rep);
+%! for m = {"green-metallic-paint \\| no", "red-plastic \\| yes"}
+%!   assert (! isempty (regexp (rep, ["\\| " m{1} " \\| \\*\\*(lafortune|ggx)\\*\\* 0\\.\\d{3} \\((inplane|hemisphere)(_ggx)?\\) \\| " ...
+%!                                    "\\*\\*(lafortune|ggx)\\*\\* 0\\.\\d{3} "])), m{1});
+%! endfor
+%! ## medians per model and lobe count: sizes, all, metals, non-metals, dE, best on, albedo > 1
+%! assert (! isempty (regexp (rep, ["\\| ggx \\| 2 \\| 21 \\| 168 \\| \\d+ \\| 0\\.\\d{3} \\| 0\\.\\d{3} \\| 0\\.\\d{3} \\| " ...
+%!                                  "\\d+\\.\\d\\d \\| \\d of 2 \\| \\d of 4 \\|"])), rep);
+%! assert (! isempty (regexp (rep, "\\| lafortune \\| 1 \\| 12 \\| 96 \\| \\d+ \\| 0\\.\\d{3} \\| 0\\.\\d{3} \\| 0\\.\\d{3} \\| [\\d.]+ \\| \\d of 2 \\| - \\|")), rep);
+%! assert (! isempty (regexp (rep, ["It loses on \\d / \\d of the 2 processed materials \\(1 / 2 lobes\\); " ...
+%!                                  "on the metals on \\d / \\d of 1, on the non-metals on \\d / \\d of 1\\."])), rep);
+%! S = jsondecode (fileread (fullfile (db, "summary.json")));
+%! assert (S.models.models, {"lafortune"; "ggx"});
+%! assert (S.models.per_model.ggx.params(:)', [12 21]);
+%! assert (S.models.per_model.lafortune.best_on + S.models.per_model.ggx.best_on, [2; 2]);
+%! assert (numel (S.models.best), 2);
+%! ## where Lafortune loses, when it does: each row's FLIP gain is the difference of the two
+%! for x = S.models.lafortune_loses(:)'
+%!   assert (x.flip_gain, x.flip - x.winner_flip, 1e-12);
+%!   assert (x.flip_gain > 0);
+%! endfor
+%! assert (! isempty (regexp (rep, "\\| (red-plastic|green-metallic-paint) \\| [12] \\| 0\\.\\d{3} \\((inplane|hemisphere)\\) \\| ggx, 0\\.\\d{3} \\(")) || isempty (S.models.lafortune_loses));
+%! ## the sheets have a row per method
+%! assert (exist (fullfile (db, "materials", "red-plastic", "sheet", "red-plastic.png"), "file") == 2);
 
 %!test
 %! ## GNU parallel over ssh: a real OpenSSH server on 127.0.0.1, hosts node-a and node-b

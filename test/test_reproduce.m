@@ -3,7 +3,9 @@
 ##
 ## Integration test: a reduced `make reproduce` (QUICK=1: small images, few
 ## samples) into a scratch folder, once on ../shared/data/merl-proxy (skipped
-## when absent) and once with no MERL files (the built-in stand-ins); report.md and summary.json must
+## when absent; with the reduced study and one more method, inplane_ggx, a
+## GGX fit beside the Lafortune fits) and once with no MERL files (the
+## built-in stand-ins); report.md and summary.json must
 ## exist and hold finite numbers, and a second run must redo nothing.
 ## Run by `make check` (which sets LAFORTUNE_TOP).
 
@@ -41,6 +43,16 @@
 %!   assert (! isempty (strfind (rep, "| green-metallic-paint | 2 | 31.44 dB |")));
 %!   assert (! isempty (strfind (rep, "## The fits as a viewer sees them: FLIP and colour difference")));
 %!   assert (! isempty (regexp (rep, "\\| red-plastic \\| scene \\(recommended\\) \\| 3 \\| [0-9.]+ / [0-9.]+ \\| 0\\.[0-9]{4} / 0\\.[0-9]{4} \\|")));
+%!   ## the best model of each material: Lafortune's, the one model of MODELS,
+%!   ## or, in the run with the extra method inplane_ggx, Lafortune's or GGX
+%!   assert (! isempty (strfind (rep, "## The best model")));
+%!   if (isempty (extra))
+%!     assert (! isempty (regexp (rep, ["\\| red-plastic \\| 3 \\| 0\\.\\d{4} \\((inplane|hemisphere|scene)\\) \\| " ...
+%!                                      "\\*\\*lafortune\\*\\* \\|"])), rep);
+%!   else
+%!     assert (! isempty (regexp (rep, ["\\| red-plastic \\| 3 \\| 0\\.\\d{4} \\((inplane|hemisphere|scene)\\) \\| " ...
+%!                                      "0\\.\\d{4} \\(inplane_ggx\\) \\| \\*\\*(lafortune|ggx)\\*\\* \\|"])), rep);
+%!   endif
 %!   if (! isempty (extra))
 %!     ## the study, reduced: in-plane and scene tables, plain weights
 %!     assert (! isempty (strfind (rep, "## Which fit looks right")));
@@ -84,6 +96,17 @@
 %!             sprintf ("%s %s", mat2str (s.deltae_scene_pov, 4), mat2str (s.deltae_inplane_pov, 4)));
 %!     ## the two renderers agree on the same model
 %!     assert (all (s.renderers_psnr > 30));
+%!     ## the best model: the lowest FLIP of every method
+%!     b = S.best_model.(mat{1});
+%!     f = [s.flip_inplane_pov(:)'; s.flip_hemisphere_pov(:)'; s.flip_scene_pov(:)'];
+%!     if (isempty (extra))
+%!       assert (b.model(:)', repmat ({"lafortune"}, 1, 3));
+%!     else
+%!       f(end+1,:) = s.flip_inplane_ggx_pov;
+%!       assert (all (ismember (b.model, {"lafortune", "ggx"})));
+%!       assert (all (isfinite (s.fit_rmse_inplane_ggx)) && all (diff (s.fit_rmse_inplane_ggx) <= 1e-12));
+%!     endif
+%!     assert (b.flip(:)', min (f));
 %!   endfor
 %!   for f = {"figures/plane-red-plastic.png", "figures/renders-green-metallic-paint.png", ...
 %!            "figures/fit-trace.png", "figures/spp.png", "fit/red-plastic-inplane-2.json", ...
@@ -104,7 +127,7 @@
 %! end_unwind_protect
 %!endfunction
 
-%!test __reproduce (true, "", "STUDY=1 STUDY_WEIGHTS=plain STUDY_TABLES='inplane scene'")  # on ../shared/data/merl-proxy
+%!test __reproduce (true, "", "STUDY=1 STUDY_WEIGHTS=plain STUDY_TABLES='inplane scene' METHODS='inplane hemisphere scene inplane_ggx'")  # on ../shared/data/merl-proxy
 %!test __reproduce (false)   # no MERL files: the built-in stand-ins
 
 %!test
