@@ -63,7 +63,8 @@
 ## @code{lobe_time}, @code{n}, @code{groups}, @code{reduce}) and
 ## @code{type}, @code{albedo} (1 x 3, the largest albedo over the incidence
 ## angles 0, 5, @dots{}, 85 and 89 degrees, where @code{"energy"} also
-## constrains it), @code{energy} (1 x 3, albedo <= 1) and
+## constrains it), @code{albedo_lobes} (nlobes x 3: the same for the fit
+## with each lobe count, @var{models}), @code{energy} (1 x 3, albedo <= 1) and
 ## @code{enforced} (whether the constraint was applied).  @var{models}
 ## holds the fits with 1 .. @var{nlobes} lobes.
 ##

@@ -89,14 +89,10 @@ function R = repro_fit (material)
       endfor
     endfor
     ## energy: brdf_fit reports the albedo of the physically based types'
-    ## fit with the most lobes; the fits with fewer lobes at the same angles
-    if (isfield (info, "albedo"))
+    ## fits, for every lobe count
+    if (isfield (info, "albedo_lobes"))
       for k = c.lobes
-        if (k == max (c.lobes))
-          r.albedo(k,:) = info.albedo;
-        else
-          r.albedo(k,:) = max (brdf_albedo (models{k}, [0:5:85, 89]), [], 1);
-        endif
+        r.albedo(k,:) = info.albedo_lobes(k,:);
       endfor
     endif
     ## the error-against-time traces, thinned for the record

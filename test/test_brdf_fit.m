@@ -86,6 +86,8 @@
 %!     assert (info.trace{c}(end,2), info.rmse(c), 1e-12 * info.rmse(c));
 %!   endfor
 %!   assert (all (isfinite (info.albedo)));
+%!   assert (info.albedo_lobes(3,:), info.albedo);
+%!   assert (info.albedo_lobes(1,:), max (brdf_albedo (ms{1}, [0:5:85, 89]), [], 1));
 %!   material_eval (f, S.wi, S.wo);                  # checks the bounds
 %! endfor
 

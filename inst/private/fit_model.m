@@ -64,7 +64,7 @@ function [models, info] = fit_model (S, wt, n0, def, nlobes, opt)
                  "error", nan3, "iterations", zeros (1, 3), "full_iterations", zeros (1, 3),
                  "rejected", zeros (1, 3), "converged", true (1, 3), "time", zeros (1, 3),
                  "trace", {cell(1, 3)}, "history", nan (nlobes, 3),
-                 "lobe_time", nan (nlobes, 3), "albedo", zeros (1, 3), "energy", true (1, 3),
+                 "lobe_time", nan (nlobes, 3), "albedo", zeros (1, 3), "albedo_lobes", zeros (nlobes, 3), "energy", true (1, 3),
                  "enforced", false (1, 3));
   P0 = zeros (1 + nlobes * (1 + numel (def.shape)), 3);
   Ps = repmat ({P0}, 1, nlobes);
@@ -130,8 +130,10 @@ function [models, info] = fit_model (S, wt, n0, def, nlobes, opt)
   for c = opt.channels(:)'
     info.trace{c} = fit_trace (traces{c}, info.time(c), info.rmse(c), n0 >= N);
   endfor
-  A = brdf_albedo (model, fit_energy ());
-  info.albedo = max (A, [], 1);
+  for k = 1:nlobes
+    info.albedo_lobes(k,:) = max (brdf_albedo (models{k}, fit_energy ()), [], 1);
+  endfor
+  info.albedo = info.albedo_lobes(nlobes,:);
   info.energy = info.albedo <= 1;
 endfunction
 
