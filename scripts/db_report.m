@@ -44,9 +44,6 @@ function db_report ()
   mats = c.materials;
   S = repro_files ().steps;
   steps = {S([S.database]).name};
-  label = struct ("inplane", "in-plane (the paper's method)",
-                  "hemisphere", "hemisphere (solid-angle weights)",
-                  "scene", "scene (the recommended fit)");
   D = struct ("material", mats, "ok", false, "error", "", "rec", [], "root", "");
   for i = 1:numel (mats)
     root = repro_files ("db_material", c.results, mats{i});
@@ -161,9 +158,9 @@ function db_report ()
   repro_save (repro_files ("table", c.results, ""), [strjoin(rows, "\n") "\n"]);
 
   ## --- the plots: PSNR and FLIP against lobe count, every material
-  plot_lobes_db (P, c, mats, label, "PSNR against the measured render (dB)", [],
+  plot_lobes_db (P, c, mats, "PSNR against the measured render (dB)", [],
                  [], repro_files ("fig_psnr_lobes", c.results, ""));
-  plot_lobes_db (F, c, mats, label, "FLIP against the measured render (lower is better)", [0 1],
+  plot_lobes_db (F, c, mats, "FLIP against the measured render (lower is better)", [0 1],
                  c.fail_flip, repro_files ("fig_flip_lobes", c.results, ""));
 
   ## --- report.md
@@ -214,13 +211,13 @@ function db_report ()
       med = @(q, r) median (X.(q).(r).(m{1})(ok,j));
       cr = arrayfun (@(i) mean (D(i).rec.fit.(m{1}).errors.(repro_method (m{1}).base).cos_rmse(c.lobes(j),:)), ok);
       if (isempty (x))
-        L{end+1} = sprintf ("| %s | %d |%s", label_of (label, m{1}), c.lobes(j), repmat (" - |", 1, 11));
+        L{end+1} = sprintf ("| %s | %d |%s", repro_method (m{1}).label, c.lobes(j), repmat (" - |", 1, 11));
         continue;
       endif
       [w, iw] = min (x);
       [wf, iwf] = max (F.(m{1})(ok,j));
       L{end+1} = sprintf (["| %s | %d | %.2f | %.3f | %.2f | %.1f | %.2f | %s | %.2f | %.3f | %s | " ...
-                           "%.2f, %.3f, %.2f, %.1f | %.4g |"], label_of (label, m{1}), c.lobes(j),
+                           "%.2f, %.3f, %.2f, %.1f | %.4g |"], repro_method (m{1}).label, c.lobes(j),
                           median (x), med ("flip", "pov"), med ("deltae", "pov"), med ("hue", "pov"),
                           w, mats{ok(iw)}, max (x), wf, mats{ok(iwf)},
                           med ("psnr", "rt"), med ("flip", "rt"), med ("deltae", "rt"), med ("hue", "rt"),
@@ -336,7 +333,7 @@ function db_report ()
     [falls_rt, rise_rt] = falls_of (Frt.(m{1}), ok, c.fail_flip_drop);
     L{end+1} = sprintf (["- %s: best FLIP above %g: %s; more lobes do not help (FLIP down by less than %g): " ...
                          "%s; more lobes render worse: %s (POV-Ray), %s (rt_render)."],
-                        label_of (label, m{1}), c.fail_flip,
+                        repro_method (m{1}).label, c.fail_flip,
                         names_val (mats, high, min (F.(m{1})(high,:), [], 2), "FLIP %.3f"), c.fail_flip_gain,
                         names_val (mats, flat, F.(m{1})(flat,end) - F.(m{1})(flat,1),
                                    sprintf ("FLIP %%+.3f from %d to %d lobes", min (c.lobes), max (c.lobes))),
@@ -423,7 +420,7 @@ function db_report ()
                         "fail_flip", c.fail_flip, "fail_flip_gain", c.fail_flip_gain,
                         "fail_flip_drop", c.fail_flip_drop);
   repro_save (repro_files ("summary", c.results, ""), sm);
-  write_gallery (c, D, P, F, X.deltae.pov, label);
+  write_gallery (c, D, P, F, X.deltae.pov);
   printf ("database: %d materials (%d failed): %s\n", numel (mats), numel (bad),
           repro_files ("report", c.results, ""));
 endfunction
@@ -646,13 +643,6 @@ function s = plural (k)
   s = ifelse (k == 1, "", "s");
 endfunction
 
-function s = label_of (label, m)
-  s = m;
-  if (isfield (label, m))
-    s = label.(m);
-  endif
-endfunction
-
 ## the materials IDX with their values V, e.g. "gold (FLIP 0.612)"
 function s = names_val (mats, idx, v, fmt)
   if (isempty (idx))
@@ -683,7 +673,7 @@ endfunction
 ## the lobe count, one line per material named at its end; YLAB the axis
 ## label, YL its limits ([]: from the values), LIMIT a threshold drawn dashed
 ## ([]: none); written to FILE
-function plot_lobes_db (X, c, mats, label, ylab, yl, limit, file)
+function plot_lobes_db (X, c, mats, ylab, yl, limit, file)
   warning ("off", "Octave:gnuplot-graphics");
   graphics_toolkit ("gnuplot");
   nm = numel (c.methods);
@@ -725,7 +715,7 @@ function plot_lobes_db (X, c, mats, label, ylab, yl, limit, file)
     set (gca, "xtick", c.lobes);
     xlabel ("lobes");
     ylabel (ylab);
-    title (label_of (label, m), "interpreter", "none");
+    title (repro_method (m).label, "interpreter", "none");
     grid on;
   endfor
   repro_print (h, file, 90, "db_report");
@@ -749,7 +739,7 @@ function ly = spread (y, gap, yl)
   ly(o) = ys;
 endfunction
 
-function write_gallery (c, D, P, F, E, label)
+function write_gallery (c, D, P, F, E)
   H = {"<!DOCTYPE html>", "<html><head><meta charset=\"utf-8\"><title>lafortune: contact sheets</title>", ...
        "<style>body{font-family:sans-serif} img{max-width:100%} .err{color:#a00}</style></head><body>", ...
        "<h1>Measured render and Lafortune fits, per material</h1>", "<ul>"};
@@ -766,7 +756,7 @@ function write_gallery (c, D, P, F, E, label)
       continue;
     endif
     for m = c.methods
-      H{end+1} = sprintf ("<p>%s, %s lobes: PSNR %s dB; FLIP %s; &Delta;E %s</p>", label_of (label, m{1}),
+      H{end+1} = sprintf ("<p>%s, %s lobes: PSNR %s dB; FLIP %s; &Delta;E %s</p>", repro_method (m{1}).label,
                           lobes, lobes_txt (P.(m{1})(i,:)), lobes_txt (F.(m{1})(i,:), "%.3f"),
                           lobes_txt (E.(m{1})(i,:)));
     endfor

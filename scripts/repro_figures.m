@@ -128,14 +128,9 @@ function study_figure (c, mat, file, q)
                     "file", file));
 endfunction
 
-## a row of the renders' figure: its method (scene_ggx: "scene_ggx fits")
+## a row of the renders' figure: its method's label (repro_method)
 function s = row_name (m)
-  rowname = struct ("inplane", "in-plane fits", "hemisphere", "hemisphere fits",
-                    "scene", "scene fits (recommended)");
-  s = [m " fits"];
-  if (isfield (rowname, m))
-    s = rowname.(m);
-  endif
+  s = repro_method (m).label;
 endfunction
 
 function done (hf)

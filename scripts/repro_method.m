@@ -18,8 +18,12 @@
 ## @code{model} (the type for brdf_fit; @code{lafortune} when the name has
 ## none), @code{base} (the name without its model: the method whose table
 ## and options it fits, and the key of the errors on that table in the fit
-## record) and @code{opts} (the fit's options for the colour mode).  The
-## model is not checked here against the list of types: brdf_fit does it.
+## record), @code{opts} (the fit's options for the colour mode) and
+## @code{label}, the method's name in the reports and figures (the three
+## tables of the paper's model by what they are, as @qcode{"in-plane (the
+## paper's method)"}; any other as table, colour mode and model, as
+## @qcode{"scene, shared colour, ggx"}).  The model is not checked here
+## against the list of types: brdf_fit does it.
 ##
 ## With two cell arrays, the methods of the pipeline: every method of
 ## @var{methods} (METHODS) crossed with every model type of @var{models}
@@ -67,5 +71,26 @@ function out = repro_method (name, models)
             "(inplane, hemisphere, scene), optionally _shared or _separate, optionally a model " ...
             "type other than lafortune (a method without one fits the Lafortune model)"], name);
   endif
+  p.label = method_label (p);
   out = p;
+endfunction
+
+function s = method_label (p)
+  names = struct ("inplane", "in-plane", "hemisphere", "hemisphere", "scene", "scene");
+  notes = struct ("inplane", " (the paper's method)", "hemisphere", " (solid-angle weights)",
+                  "scene", " (recommended)");
+  s = p.table;
+  if (isfield (names, s))
+    s = names.(s);
+  endif
+  if (isempty (p.color) && strcmp (p.model, "lafortune") && isfield (notes, p.table))
+    s = [s notes.(p.table)];
+    return;
+  endif
+  if (! isempty (p.color))
+    s = [s ", " p.color " colour"];
+  endif
+  if (! strcmp (p.model, "lafortune"))
+    s = [s ", " p.model];
+  endif
 endfunction

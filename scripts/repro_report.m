@@ -56,14 +56,13 @@ function repro_report ()
   L{end+1} = "The paper rendered the Happy Buddha with pbrt; our scene differs (see settings), so compare trends, not decibels.";
   L{end+1} = "";
   need_inplane (c);
-  mlabel = struct ("inplane", "in-plane", "hemisphere", "hemisphere", "scene", "scene (recommended)");
   others = c.methods(! strcmp (c.methods, "inplane"));
   ## the tables of the fits' errors: the methods without their models
   tables = unique (cellfun (@(m) repro_method (m).base, c.methods, "uniformoutput", false), "stable");
   otables = tables(! strcmp (tables, "inplane"));
   hdr = "| material | lobes | paper | in-plane fit, POV-Ray | in-plane fit, rt_render |";
   for m = others
-    hdr = [hdr sprintf(" %s fit, POV-Ray / rt_render |", label_of (mlabel, m{1}))];
+    hdr = [hdr sprintf(" %s fit, POV-Ray / rt_render |", repro_method (m{1}).label)];
   endfor
   L{end+1} = [hdr " rt_render vs POV-Ray (same model) |"];
   L{end+1} = ["|---|---|---|---|---|" repmat("---|", 1, numel (others)) "---|"];
@@ -125,7 +124,7 @@ function repro_report ()
   L{end+1} = "";
   L{end+1} = "Each fit's render has its HDR-FLIP error map (per pixel; black: no visible difference, white: the largest) in the corner, and its FLIP under its PSNR.";
   L{end+1} = "";
-  L = perceptual_section (c, L, D, mlabel);
+  L = perceptual_section (c, L, D);
   ## --- the models: the best of each material
   [L, sm.best_model] = models_section (c, L, D);
   ## --- the study
@@ -253,13 +252,6 @@ function need_inplane (c)
   endif
 endfunction
 
-## the label of method M (its name when LABEL has none)
-function s = label_of (label, m)
-  s = m;
-  if (isfield (label, m))
-    s = label.(m);
-  endif
-endfunction
 
 ## the best model of each material at each lobe count, by the FLIP of the
 ## POV-Ray renders, each model's best over the methods (repro_models)
@@ -318,7 +310,7 @@ endfunction
 
 ## the fits judged as a viewer sees them: FLIP, CIEDE2000 and the hue
 ## statistic of every render (img_compare, in the render step's records)
-function L = perceptual_section (c, L, D, mlabel)
+function L = perceptual_section (c, L, D)
   L{end+1} = "## The fits as a viewer sees them: FLIP and colour difference";
   L{end+1} = "";
   L{end+1} = ["PSNR is relative to the measured render's peak, the specular highlight, often a thousand times the rest of the picture, " ...
@@ -338,7 +330,7 @@ function L = perceptual_section (c, L, D, mlabel)
       for j = 1:numel (c.lobes)
         r = R.(m{1})(j);
         L{end+1} = sprintf ("| %s | %s | %d | %.2f / %.2f | %.4f / %.4f | %.2f / %.2f | %.1f / %.1f |",
-                            mat, label_of (mlabel, m{1}), c.lobes(j), r.psnr_pov, r.psnr_rt, r.flip_pov, r.flip_rt,
+                            mat, repro_method (m{1}).label, c.lobes(j), r.psnr_pov, r.psnr_rt, r.flip_pov, r.flip_rt,
                             r.deltae_pov, r.deltae_rt, r.hue_pov, r.hue_rt);
       endfor
     endfor

@@ -323,6 +323,10 @@
 %!   assert ({p.table, p.color, p.model, p.base, p.opts}, {"inplane", "shared", "ggx", "inplane_shared", {"color", "shared"}});
 %!   p = repro_method ("scene");
 %!   assert ({p.table, p.color, p.model, p.base}, {"scene", "", "lafortune", "scene"});
+%!   ## one label per method, for both reports and the figures
+%!   assert (p.label, "scene (recommended)");
+%!   assert (repro_method ("inplane_shared_ggx").label, "in-plane, shared colour, ggx");
+%!   assert (repro_method ("hemisphere_ward").label, "hemisphere, ward");
 %!   assert (repro_method ({"inplane", "scene_shared", "hemisphere_ward"}, {"lafortune", "ggx"}),
 %!           {"inplane", "scene_shared", "hemisphere_ward", "inplane_ggx", "scene_shared_ggx"});
 %!   fail ('repro_method ("scene_lafortune")', "unknown method");
