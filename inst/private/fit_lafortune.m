@@ -18,38 +18,15 @@
 function [model, models, info] = fit_lafortune (S, wt, n0, nlobes, opt)
   N = rows (S.wi);
   xall = [S.wi(:,1) .* S.wo(:,1) + S.wi(:,2) .* S.wo(:,2), S.wi(:,3) .* S.wo(:,3)];
-  ## the metrics as lafortune_error defines them (metric_spec), on the table
-  ## as given (without a scene table's prior; rows 1..n0), in the data's
-  ## units: what info reports
-  Srep = table_rows (S, (1:N)' <= n0);
-  [rep, names] = fit_specs (Srep, opt.weight);
-  pall = rep.plain;                     # plain, on every row the fit sees
-  if (n0 < N)
-    pall = metric_spec ("plain", S, "lafortune_fit");
-  endif
-  ## a sample of weight 0 is left out of the fit; the data are divided by
-  ## their largest magnitude per channel, so that nothing in the fit depends
-  ## on the data's units
+  ## a sample of weight 0 is left out of the fit; the metrics, the scale
+  ## and the scaled data (fit_setup)
   keep = wt > 0;
-  Sf = table_rows (S, keep);
-  x = xall(keep,:);
-  sc = max (abs (Sf.rgb), [], 1);
+  F = fit_setup (S, n0, keep, opt, "lafortune_fit");
+  [Srep, rep, names, Sf, Ss, sc, fspec, pspec] = deal (F.Srep, F.rep, F.names, F.Sf, F.Ss, F.sc,
+                                                     F.fspec, F.pspec);
+  iref = F.iref;
   shared = strcmp (opt.color, "shared");
-  if (shared)
-    ## one scale for the channels that share lobes; the reference channel
-    ## (whose lobe is the plain Lafortune lobe, shared_lobes) is the largest
-    [scmax, iref] = max (sc(opt.channels));
-    sc(:) = scmax;
-  endif
-  sc(! (sc > 0)) = 1;
-  Ss = Sf;
-  Ss.rgb = Sf.rgb ./ sc;
-  fspec = metric_spec (opt.weight, Ss, "lafortune_fit", pall.delta ./ sc);
-  pspec = pall;
-  if (! all (keep))
-    pspec.w = pspec.w(keep,:);
-    pspec.ty = pspec.ty(keep,:);
-  endif
+  x = xall(keep,:);
   ## the coarse grid for starts and the guard are for the growing fit only
   ## (from a given start, one run: fit_channel)
   grow = strcmp (opt.init, "grow") && isempty (opt.start);

@@ -35,27 +35,12 @@
 function [models, info] = fit_model (S, wt, n0, def, nlobes, opt)
   fname = "brdf_fit";
   N = rows (S.wi);
-  Srep = table_rows (S, (1:N)' <= n0);
-  [rep, names] = fit_specs (Srep, opt.weight);
-  pall = rep.plain;
-  if (n0 < N)
-    pall = metric_spec ("plain", S, fname);
-  endif
   keep = wt > 0 & S.wi(:,3) > 0 & S.wo(:,3) > 0;
-  Sf = table_rows (S, keep);
-  X = [Sf.wi(:,3), Sf.wo(:,3), sum(Sf.wi .* Sf.wo, 2)];
-  sc = max (abs (Sf.rgb), [], 1);
+  F = fit_setup (S, n0, keep, opt, fname);
+  [Srep, rep, names, Sf, Ss, sc, fspec, pspec] = deal (F.Srep, F.rep, F.names, F.Sf, F.Ss, F.sc,
+                                                     F.fspec, F.pspec);
   shared = strcmp (opt.color, "shared");
-  if (shared)
-    sc(:) = max (sc(opt.channels));
-  endif
-  sc(! (sc > 0)) = 1;
-  Ss = Sf;
-  Ss.rgb = Sf.rgb ./ sc;
-  fspec = metric_spec (opt.weight, Ss, fname, pall.delta ./ sc);
-  pspec = pall;
-  pspec.w = pspec.w(keep,:);
-  pspec.ty = pspec.ty(keep,:);
+  X = [Sf.wi(:,3), Sf.wo(:,3), sum(Sf.wi .* Sf.wo, 2)];
   [j, xc, how] = groups (X, wt(keep), opt.reduce);
   nan3 = nan (1, 3);
   info = struct ("type", def.type, "nlobes", nlobes, "weight", opt.weight, "color", opt.color,
@@ -128,7 +113,8 @@ function [models, info] = fit_model (S, wt, n0, def, nlobes, opt)
   info = fit_errors (info, rep, names, F (model), cellfun (F, models(1:nlobes-1), "uniformoutput", false),
                      fitted, opt.weight);
   for c = opt.channels(:)'
-    info.trace{c} = fit_trace (traces{c}, info.time(c), info.rmse(c), n0 >= N);
+    info.trace{c} = fit_trace (traces{c}, info.time(c), info.rmse(c),
+                                strcmp (how, "exact") && n0 >= N);
   endfor
   for k = 1:nlobes
     info.albedo_lobes(k,:) = max (brdf_albedo (models{k}, fit_energy ()), [], 1);
