@@ -7,10 +7,12 @@
 ## (radians, a column): a(theta_i) = integral of f (wi, wo) cos theta_o
 ## over the hemisphere of wo.  The Lambertian term gives rho_d exactly; each
 ## lobe is integrated over the half vector h (d omega_o = 4 (wi.h) d
-## omega_h), with Gauss-Legendre nodes in theta_h on three intervals set by
-## the lobe's width (the model's @code{width}: dense where the lobe lives,
-## whatever its roughness) and the midpoint rule in phi_h over [0, pi]
-## (the integrand is even in phi_h).
+## omega_h), with Gauss-Legendre nodes in theta_h on intervals set by the
+## lobe's width w (the model's @code{width}): edges at tan theta_h = 2 w,
+## 8 w, ..., 8192 w, each 4 times the last, so that the nodes are dense
+## where the lobe lives, whatever its roughness, and follow a heavy tail
+## (GGX's falls as tan^-4 theta_h) out to the horizon; the midpoint rule in
+## phi_h over [0, pi] (the integrand is even in phi_h).
 ## @end deftypefn
 
 function a = model_albedo (def, p, theta)
@@ -37,7 +39,7 @@ function a = model_albedo (def, p, theta)
       continue;
     endif
     w = def.width (q);
-    e = unique ([0, min(atan ([2 8] * w), pi/2), pi/2]);
+    e = unique ([0, min(atan (2 * 4 .^ (0:6) * w), pi/2), pi/2]);
     th = []; tw = [];
     for i = 1:numel (e) - 1
       th = [th; (e(i) + e(i+1)) / 2 + (e(i+1) - e(i)) / 2 * gx];
