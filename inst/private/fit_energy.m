@@ -55,6 +55,17 @@ function [u, enforced] = fit_energy (D, u)
   else
     u = u0;
   endif
+  ## sqp meets the constraint to its tolerance: an albedo a hair above 1 is
+  ## scaled to just below it, so that the fit's report (albedo <= 1) holds
+  A = albedo_of (D, u, TH);
+  P = fit_phys ("split", D, u);
+  for c = 1:D.nch
+    f = max (A(c,:));
+    if (f > 1 - 1e-12)
+      P(amp,c) /= f / (1 - 1e-12);
+    endif
+  endfor
+  u = fit_phys ("join", D, P);
 endfunction
 
 ## nch x numel (TH) albedos in data units

@@ -58,8 +58,8 @@ function varargout = fit_phys (what, D, arg)
       hi = def.hi(2:end);
       lo(logs) = log (lo(logs));
       hi(logs) = log (hi(logs));
-      lobe_lo = [zeros(nch, 1); lo(:)];
-      lobe_hi = [Inf(nch, 1); hi(:)];
+      lobe_lo = [def.lo(1) * ones(nch, 1); lo(:)];        # ks, then the shape
+      lobe_hi = [def.hi(1) * ones(nch, 1); hi(:)];
       varargout = {[zeros(nch, 1); repmat(lobe_lo, nl, 1)], [Inf(nch, 1); repmat(lobe_hi, nl, 1)]};
     case "split"
       u = arg;
