@@ -13,9 +13,10 @@
 ## paper's fit).  The physically based types (@code{"blinnphong"},
 ## @code{"ward"}, @code{"cooktorrance"}, @code{"ggx"},
 ## @code{"ashikhminshirley"}) are fitted by optim's @code{leasqr} with the
-## analytic Jacobian and their bounds (ks >= 0, rho_d >= 0, roughness and
-## exponents > 0, F0 in [0, 1]; roughness and exponents are moved by their
-## logarithm).  @var{S} is a table as @code{lafortune_fit} takes it
+## analytic Jacobian and their type's bounds (ks >= 0, rho_d >= 0,
+## roughness and exponents > 0 within the ranges @code{brdf_model (type)}
+## gives in @code{lo} and @code{hi}, F0 in [0, 1]; roughness and exponents
+## are moved by their logarithm).  @var{S} is a table as @code{lafortune_fit} takes it
 ## (@code{merl_plane}, @code{merl_samples}, @code{merl_scene}; optional
 ## @code{weight}, a scene table's prior), and the fit keeps what
 ## @code{lafortune_fit} does: the same metrics and defaults, samples merged
@@ -23,8 +24,8 @@
 ## theta_i, cos theta_o, wi.wo): exact, or cells of a grid for a large
 ## table, @code{"reduce"}), the data divided by their largest
 ## magnitude (fitting c*y gives c times the fit of y), lobes grown one at a
-## time from the fit with one lobe fewer (so the error never rises with
-## more lobes), a guard (a result that is not finite or exceeds 10 times
+## time from the fit with one lobe fewer (so the fit's objective, on the
+## samples or cells it runs on, never rises with more lobes), a guard (a result that is not finite or exceeds 10 times
 ## the data's maximum on the data is rejected), and the trace of the error
 ## against run time.
 ##

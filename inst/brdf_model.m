@@ -37,7 +37,8 @@
 ## lobe by lobe its fields (as @code{def.fields}): what the fit uses.
 ##
 ## Errors: @code{lafortune:badModelType}, @code{lafortune:badModel},
-## @code{lafortune:badOption}.
+## @code{lafortune:badOption}, @code{lafortune:badDirections} (the
+## Jacobian's directions below the horizon).
 ##
 ## @example
 ## @group
@@ -188,3 +189,5 @@ endfunction
 %!error id=lafortune:badModel brdf_model ("ggx", "ks", 1, "alpha", 0)
 %!error id=lafortune:badModel brdf_model ("ggx", "ks", 1, "F0", 1.5)
 %!error id=lafortune:badModel brdf_model ("ward", "ks", [1 2])
+%!error id=lafortune:badDirections brdf_model (brdf_model ("ggx", "ks", 1), [0.6 0 -0.8], [0 0 1], 1)
+%!error id=lafortune:badOption brdf_model (brdf_model ("ggx", "ks", 1), [0 0 1], [0 0 1], 4)

@@ -137,7 +137,7 @@ function [L, S] = db_models (L, c, D, ok, mats, X)
       else
         alb = "-";
       endif
-      L{end+1} = sprintf ("| %s | %d | %d | %d | %.0f | %s | %s | %s | %s | %d of %d | %s |", M(t).model, k,
+      L{end+1} = sprintf ("| %s | %d | %g | %g | %.0f | %s | %s | %s | %s | %d of %d | %s |", M(t).model, k,
                           s.params(j), s.bytes(j), s.json_bytes(j), num (s.median_flip(j), "%.3f"),
                           num (s.median_flip_metals(j), "%.3f"), num (s.median_flip_nonmetals(j), "%.3f"),
                           num (s.median_deltae(j), "%.2f"), s.best_on(j), numel (ok), alb);

@@ -38,7 +38,7 @@
 ## @var{rep} with the cell's summed weights: the objective on it is a
 ## quadrature of D's; unlike the cell's mean value at its mean (a, c), it
 ## has no bias where the model is curved within a cell, so its minimiser is
-## closer to D's (on the in-plane tables: 5 to 20% fewer iterations on D).
+## closer to D's (fewer iterations on D after the warm-up).
 ## @end deftypefn
 function D = fit_data (spec, c, j, xc, y, s, pspec, yp, fname)
   if (ischar (spec))

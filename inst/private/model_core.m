@@ -6,8 +6,9 @@
 ## [cos theta_i, cos theta_o, wi.wo] (N x 3, both cosines > 0): @var{p} =
 ## [rho_d; ks_1; q_1; ks_2; q_2; ...] in the model's own units, f = rho_d /
 ## pi + sum_k ks_k g (X, q_k), and @var{J} = df/dp (N x numel (p)).  The
-## one evaluation of these models: material_eval, the fit, the albedo and
-## the exports' checks go through it.
+## one evaluation of these models: material_eval, the fit and the exports'
+## checks go through it (the albedo's quadrature and the fit's screen of
+## starts take the type's lobe g itself, of unit amplitude).
 ## @end deftypefn
 
 function [f, J] = model_core (def, p, X)
