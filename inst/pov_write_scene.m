@@ -75,8 +75,8 @@
 ## accurate.
 ##
 ## @strong{What is left out.}  A lobe whose largest radiance anywhere the
-## view reaches is below @qcode{"lobe_tol"} times the largest radiance of
-## the whole material there is dropped.  The tables cover only the angles
+## view reaches is below @qcode{"lobe_tol"} times the view's radiance level
+## (above) is dropped.  The tables cover only the angles
 ## that visible, lit surfaces reach (outer map: the range of ti; each inner
 ## map: the range of the inner angle met near its ti), found by casting rays at every
 ## pixel centre, corner and edge midpoint (mesh vertices standing in for
@@ -98,8 +98,8 @@
 ## output is half float (relative rounding 2.4e-4), so much less gains
 ## nothing.
 ## @item @qcode{"lobe_tol"} (1e-4)
-## Lobes contributing less than this fraction of the largest radiance are
-## dropped; 0 keeps every lobe.
+## Lobes whose largest radiance is less than this fraction of the view's
+## radiance level are dropped; 0 keeps every lobe.
 ## @item @qcode{"crop"} (true)
 ## Restrict the tables to the reached angles; false: ti in [0, pi/2], the
 ## inner angle in [0, pi/2] (to) or [0, pi] (theta_h).
@@ -286,10 +286,14 @@ function info = pov_write_scene (scene, material, file, varargin)
   if (peak > 0)
     contrib /= peak;
   endif
-  kept = contrib > 0 & contrib >= opt.lobe_tol;
-  if (strcmp (kind, "lafortune") && any (strcmp (names, "diffuse")))
-    kept(1) = contrib(1) > 0;          # lobe_tol applies to lobes
-  endif
+  ## a lobe that never shows is dropped: its largest radiance where the view
+  ## reaches is below lobe_tol times the view's radiance level (not the
+  ## peak: a sharp lobe's peak, between the pixels, can be 1e5 times the
+  ## broad lobe that carries the body); lobe_tol applies to lobes, the
+  ## diffuse term stays
+  kept = contrib > 0 & contrib * peak >= opt.lobe_tol * level;
+  d = strcmp (names, "diffuse");
+  kept(d) = contrib(d) > 0;
 
   ## entries of each kept table; the error allowed is shared between the
   ## tables that are not flat (flat ones are exact), by their size, and
