@@ -68,6 +68,8 @@
 %!     ref = rt_render (sc, m, "jitter", false, "mode", "direct", "progress", false);
 %!     img = pov_render (sc, m);
 %!     assert (img_psnr (ref, img) >= 50, "%s on %s: %.1f dB", t{1}, sn{1}, img_psnr (ref, img));
+%!     assert (img_compare (ref, img).flip < 0.05, "%s on %s: FLIP %.3f", t{1}, sn{1},
+%!             img_compare (ref, img).flip);     # the body too, which PSNR hardly sees
 %!     assert (max (img(:)) > 0.1);
 %!     if (! isempty (prev))
 %!       ## the renders match far better than another model's picture does:
