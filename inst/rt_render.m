@@ -140,7 +140,8 @@ function [img, info, cache] = rt_render (scene, material, varargin)
   endif
   opt = parse_opts (varargin, "rt_render",
                     struct ("mode", "auto", "progress", true, "jitter", scene_jitter (scene),
-                            "chunk", 65536, "slice_size", [128 64], "cache", []));
+                            "chunk", 65536, "slice_size", [128 64], "cache", [],
+                            "light_samples", []));
   if (! ischar (opt.mode) || ! any (strcmp (opt.mode, {"auto", "slice", "direct"})))
     error ("lafortune:badOption", "rt_render: MODE must be \"auto\", \"slice\" or \"direct\"");
   endif
@@ -158,8 +159,28 @@ function [img, info, cache] = rt_render (scene, material, varargin)
   n = double (n(:).');
   canslice = strcmp (scene.camera.type, "orthographic") ...
              && strcmp (scene.light.type, "directional");
+  many = any (strcmp (scene.light.type, {"environment", "lights"}));
+  ns = [];
+  if (strcmp (scene.light.type, "environment"))
+    ns = scene.light.samples;
+    if (! isempty (opt.light_samples))
+      ns = opt.light_samples;
+      if (! (isnumeric (ns) && isscalar (ns) && isreal (ns) && ns >= 1 && ns == fix (ns)))
+        error ("lafortune:badOption", "rt_render: LIGHT_SAMPLES must be a positive integer");
+      endif
+    endif
+    ns = double (ns);
+  elseif (strcmp (scene.light.type, "lights"))
+    ns = rows (scene.light.directions);
+  endif
   mode = opt.mode;
-  if (strcmp (mode, "auto"))
+  if (many)
+    if (strcmp (mode, "slice"))
+      error ("lafortune:badOption",
+             "rt_render: mode \"slice\" needs a directional light, got %s light", scene.light.type);
+    endif
+    mode = "lights";
+  elseif (strcmp (mode, "auto"))
     if (canslice)
       mode = "slice";
     else
@@ -176,10 +197,17 @@ function [img, info, cache] = rt_render (scene, material, varargin)
     [objs, epsilon] = scene_setup (scene);
   endif
   cam = scene_camera (scene);
+  env = [];
   if (strcmp (mode, "slice"))
     [Rm, sl] = slice_table (scene, material, n, -cam.f);
     material_bytes = numel (Rm) * 4;
   else
+    if (many)
+      env = struct ("D", [], "ns", ns);
+      if (strcmp (scene.light.type, "environment"))
+        env.D = env_dist (scene.light);
+      endif
+    endif
     Rm = [];
     w = whos ("material");
     material_bytes = w.bytes;
@@ -193,27 +221,32 @@ function [img, info, cache] = rt_render (scene, material, varargin)
   spp = scene.spp;
   total = npix * spp;
   chunk = min (round (opt.chunk), total);
+  if (many)                            # camera samples at once: ns light samples each
+    chunk = max (1, min (floor (round (opt.chunk) / ns), total));
+  endif
   acc = zeros (npix, 3);
   bg = double (scene.background(:).');
   nshadow = 0;
-  t_int = t_sh = t_shade = 0;
+  t_int = t_sh = t_shade = t_brdf = 0;
   ## the trace cache: what slice shading needs of each chunk's trace
-  key = struct ("scene", scene, "jitter", logical (opt.jitter), "chunk", chunk, "slice_size", n);
+  key = struct ("scene", scene, "jitter", logical (opt.jitter), "chunk", chunk, "slice_size", n,
+                "light_samples", ns);
   cached = ! isempty (opt.cache);
   if (cached)
-    if (! strcmp (mode, "slice"))
+    if (strcmp (mode, "direct"))
       error ("lafortune:badOption",
-             "rt_render: CACHE serves slice mode only (orthographic camera, directional light), this render is in %s mode",
+             "rt_render: CACHE serves slice mode (orthographic camera, directional light) and lights mode (environment or lights) only, this render is in %s mode",
              mode);
     endif
     if (! (isstruct (opt.cache) && isscalar (opt.cache) && isfield (opt.cache, "key")
            && isfield (opt.cache, "chunks") && isequal (opt.cache.key, key)))
       error ("lafortune:badOption",
-             "rt_render: CACHE must be the third output of rt_render for the same scene and options (jitter, chunk, slice_size)");
+             "rt_render: CACHE must be the third output of rt_render for the same scene and options (jitter, chunk, slice_size, light_samples)");
     endif
     nshadow = opt.cache.nshadow;
   endif
-  keep = nargout > 2 && strcmp (mode, "slice") && ! cached;
+  keep = nargout > 2 && ! strcmp (mode, "direct") && ! cached;
+  nevals = 0;
   if (keep)
     chunks = cell (1, ceil (total / chunk));
   endif
@@ -234,7 +267,7 @@ function [img, info, cache] = rt_render (scene, material, varargin)
         t0 = tic ();
         [O, D] = sample_rays (scene, cam, k, opt.jitter);
         t_int += toc (t0);
-        [T, tt] = scene_trace (objs, scene, O, D, epsilon);
+        [T, tt] = scene_trace (objs, scene, O, D, epsilon, k, env);
         t_int += tt(1);
         t_sh += tt(2);
         t_shade += tt(3);
@@ -242,7 +275,13 @@ function [img, info, cache] = rt_render (scene, material, varargin)
       endif
 
       t0 = tic ();
-      if (! cached)
+      if (! cached && strcmp (mode, "lights"))
+        Tc = struct ("h", int32 (T.h(T.S.own)), "X", T.S.X, "w", single (T.S.w),
+                     "miss", T.miss);
+        if (keep)
+          chunks{ic} = Tc;
+        endif
+      elseif (! cached)
         il = find (T.lit);
         if (strcmp (mode, "slice"))
           Tc = struct ("h", int32 (T.h(il)), "w", slice_weights (sl, T.Ns(il,:)),
@@ -254,6 +293,14 @@ function [img, info, cache] = rt_render (scene, material, varargin)
       endif
       if (strcmp (mode, "slice"))
         rad = double (slice_lookup (Rm, Tc.w)) .* Tc.cosi;
+        lith = Tc.h;
+        miss = Tc.miss;
+      elseif (strcmp (mode, "lights"))
+        t1 = tic ();
+        rad = material_x (material, Tc.X);
+        t_brdf += toc (t1);
+        rad .*= double (Tc.w);
+        nevals += rows (Tc.X);
         lith = Tc.h;
         miss = Tc.miss;
       else
@@ -303,7 +350,8 @@ function [img, info, cache] = rt_render (scene, material, varargin)
                  "time_shadow", t_sh, "time_shade", t_shade, "time_total", time_total,
                  "rays", rays, "rays_per_second", rays / time_total,
                  "material_bytes", material_bytes, "slice_size", [], "spp", spp,
-                 "cached", cached);
+                 "cached", cached, "light_samples", ns, "evaluations", nevals,
+                 "time_brdf", t_brdf);
   if (strcmp (mode, "slice"))
     info.slice_size = n;
   endif
@@ -441,7 +489,7 @@ endfunction
 %! [~, ~, C] = rt_render (sc, lam, "progress", false);
 %! rt_render (sc, lam, "cache", C, "chunk", 7, "progress", false);
 %!error id=lafortune:badOption rt_render (scene_make ("sphere", "size", 4), struct ("rho_d", [1 1 1], "Cxy", [], "Cz", [], "e", []), "cache", struct ("x", 1))
-%!error <slice mode only> rt_render (scene_make ("sphere", "size", 4, "camera", "perspective"), struct ("rho_d", [1 1 1], "Cxy", [], "Cz", [], "e", []), "cache", struct ("key", 1, "chunks", {{}}))
+%!error <CACHE serves slice mode .* and lights mode> rt_render (scene_make ("sphere", "size", 4, "camera", "perspective"), struct ("rho_d", [1 1 1], "Cxy", [], "Cz", [], "e", []), "cache", struct ("key", 1, "chunks", {{}}))
 %!error <Invalid call> rt_render (1)
 %!error id=lafortune:badMaterial rt_render (scene_make ("sphere", "size", 4), struct ("foo", 1))
 %!error id=lafortune:badMaterial rt_render (scene_make ("sphere", "size", 4), 42)

@@ -58,15 +58,45 @@
 ## @code{"orthographic"} (default) or @code{"perspective"} (same eye and
 ## target, the field of view that shows the orthographic extent at the target).
 ## @item "light"
-## @code{"directional"} (default) or @code{"point"} (placed at distance 10
-## from the target along @code{"light_direction"}).
+## @code{"directional"} (default), @code{"point"} (placed at distance 10
+## from the target along @code{"light_direction"}), @code{"environment"}
+## (light from every direction, a lat-long radiance map: options
+## @code{"map"}, @code{"rotation"}, @code{"intensity"},
+## @code{"light_samples"}) or @code{"lights"} (several directional lights,
+## the rows of @code{"light_direction"} with the rows of
+## @code{"irradiance"}; @code{scene_lights} makes them from an
+## environment).
 ## @item "light_direction"
 ## direction toward the light (normalised), default [-1 1 1] (sphere, torus,
-## mesh) or [-1 1.6 0.9] (spheres).
+## mesh) or [-1 1.6 0.9] (spheres); for @code{"lights"} a K x 3 array, one
+## light per row.
 ## @item "irradiance"
-## irradiance E on a surface facing the light, scalar or 1 x 3, default 1.
+## irradiance E on a surface facing the light, scalar or 1 x 3, default 1
+## (for @code{"lights"} also K x 1 or K x 3, one row per light).
 ## For a point light it holds at the target; the struct stores the intensity
 ## E d^2.
+## @item "map"
+## the environment: a lat-long HDR OpenEXR file (twice as wide as high,
+## row 1 straight up, the centre column in front of the camera, toward -z,
+## the columns running toward +x), one of the names
+## @code{"city"}, @code{"courtyard"} (default), @code{"forest"},
+## @code{"interior"}, @code{"night"}, @code{"studio"}, @code{"sunrise"},
+## @code{"sunset"} (the CC0 HDRIs of Debian's package @code{blender-data},
+## which @code{make deps} installs; without it the built-in sky is used, with
+## the warning @code{lafortune:noLightProbe}), @code{"sky"} (the built-in
+## analytic sky: sky, ground and a sun disk) or an H x 2H x 3 array of
+## radiance.  Slightly negative texels (compression ringing, above -0.05
+## times the mean luminance) are set to 0; a missing or unreadable file,
+## a map that is not 2:1, non-finite or negative texels give
+## @code{lafortune:badMap}.  The map lights the scene; rays that hit
+## nothing still show @code{"background"}.
+## @item "rotation"
+## turn of the environment about +y, in degrees (default 0).
+## @item "intensity"
+## factor on the map's radiance, scalar or 1 x 3, default 1.
+## @item "light_samples"
+## environment light: directions sampled per pixel sample, default 64
+## (@code{rt_render} option @qcode{"light_samples"} overrides it).
 ## @item "background"
 ## 1 x 3 background radiance, default [0 0 0].
 ## @item "file"
@@ -135,7 +165,9 @@ function scene = scene_make (name, varargin)
                             "camera", "orthographic", "light", "directional",
                             "light_direction", [], "irradiance", 1,
                             "background", [0 0 0], "file", "", "resolution", [96 48],
-                            "jitter", true, "up", "y", "normalize", true));
+                            "jitter", true, "up", "y", "normalize", true,
+                            "map", "courtyard", "rotation", 0, "intensity", 1,
+                            "light_samples", 64));
   [H, W] = check_size (opt.size);
   spp = opt.spp;
   if (! (isnumeric (spp) && isscalar (spp) && isreal (spp) && spp >= 1 && spp == fix (spp)))
@@ -150,12 +182,16 @@ function scene = scene_make (name, varargin)
     error ("lafortune:badOption",
            "scene_make: CAMERA must be \"orthographic\" or \"perspective\"");
   endif
-  if (! ischar (opt.light) || ! any (strcmp (opt.light, {"directional", "point"})))
-    error ("lafortune:badOption", "scene_make: LIGHT must be \"directional\" or \"point\"");
+  lights = {"directional", "point", "environment", "lights"};
+  if (! ischar (opt.light) || ! any (strcmp (opt.light, lights)))
+    error ("lafortune:badOption", "scene_make: LIGHT must be one of %s",
+           strjoin (strcat ('"', lights, '"'), ", "));
   endif
   E = opt.irradiance;
-  if (! (isnumeric (E) && isreal (E) && any (numel (E) == [1 3]) && all (isfinite (E))
-         && all (E >= 0)))
+  if (strcmp (opt.light, "lights"))
+    E = check_lights (opt.light_direction, E);
+  elseif (! (isnumeric (E) && isreal (E) && any (numel (E) == [1 3]) && all (isfinite (E))
+             && all (E >= 0)))
     error ("lafortune:badOption",
            "scene_make: IRRADIANCE must be a scalar or 1 x 3 of finite values >= 0");
   endif
@@ -239,7 +275,7 @@ function scene = scene_make (name, varargin)
       ldir = [-1 1 1];
   endswitch
 
-  if (! isempty (opt.light_direction))
+  if (! isempty (opt.light_direction) && ! strcmp (opt.light, "lights"))
     ldir = opt.light_direction;
     if (! (isnumeric (ldir) && isreal (ldir) && numel (ldir) == 3 && all (isfinite (ldir))
            && norm (ldir) > 0))
@@ -254,11 +290,18 @@ function scene = scene_make (name, varargin)
   if (isempty (fov))
     camera.fov = 2 * atand (extent / 2 / dist);
   endif
-  E = double (E(:).');
-  if (strcmp (opt.light, "directional"))
+  if (strcmp (opt.light, "lights"))
+    Ld = double (opt.light_direction);
+    light = struct ("type", "lights", "direction", [], "position", [], "irradiance", E,
+                    "directions", Ld ./ sqrt (sum (Ld .^ 2, 2)));
+  elseif (strcmp (opt.light, "environment"))
+    light = environment (opt, E);
+  elseif (strcmp (opt.light, "directional"))
+    E = double (E(:).');
     light = struct ("type", "directional", "direction", ldir, "position", [],
                     "irradiance", E);
   else
+    E = double (E(:).');
     d = ldist;
     light = struct ("type", "point", "direction", [], "position", target + d * ldir,
                     "irradiance", E * d ^ 2);
@@ -269,6 +312,47 @@ function scene = scene_make (name, varargin)
                   "camera", camera, "light", light);
   scene.objects = objects;
   scene.mesh_info = mesh_info;
+endfunction
+
+## the directions and irradiances of a list of lights: K x 3 each
+function E = check_lights (D, E)
+  if (! (isnumeric (D) && isreal (D) && ndims (D) == 2 && columns (D) == 3 && rows (D) >= 1
+         && all (isfinite (D(:))) && all (sum (D .^ 2, 2) > 0)))
+    error ("lafortune:badOption",
+           "scene_make: LIGHT \"lights\" needs LIGHT_DIRECTION, a K x 3 array of finite non-zero directions");
+  endif
+  K = rows (D);
+  if (! (isnumeric (E) && isreal (E) && all (isfinite (E(:))) && all (E(:) >= 0)
+         && (isscalar (E) || isequal (size (E), [1 3]) || isequal (size (E), [K 1])
+             || isequal (size (E), [K 3]))))
+    error ("lafortune:badOption",
+           "scene_make: IRRADIANCE of %d lights must be a scalar, 1 x 3, %d x 1 or %d x 3, finite and >= 0",
+           K, K, K);
+  endif
+  E = double (E) .* ones (K, 3);
+endfunction
+
+## an environment light: the map (env_load), its turn, intensity and samples
+function light = environment (opt, E)
+  a = opt.rotation;
+  if (! (isnumeric (a) && isreal (a) && isscalar (a) && isfinite (a)))
+    error ("lafortune:badOption", "scene_make: ROTATION must be a finite angle in degrees");
+  endif
+  k = opt.intensity;
+  if (! (isnumeric (k) && isreal (k) && any (numel (k) == [1 3]) && all (isfinite (k))
+         && all (k >= 0)))
+    error ("lafortune:badOption",
+           "scene_make: INTENSITY must be a scalar or 1 x 3 of finite values >= 0");
+  endif
+  ns = opt.light_samples;
+  if (! (isnumeric (ns) && isscalar (ns) && isreal (ns) && ns >= 1 && ns == fix (ns)))
+    error ("lafortune:badOption", "scene_make: LIGHT_SAMPLES must be a positive integer");
+  endif
+  env = env_load (opt.map, "scene_make");
+  light = struct ("type", "environment", "direction", [], "position", [],
+                  "irradiance", double (k(:).') .* double (E(:).'), "map", env.map,
+                  "name", env.name, "file", env.file, "rotation", double (a),
+                  "samples", double (ns), "clamped", env.clamped);
 endfunction
 
 function [H, W] = check_size (sz)
@@ -378,6 +462,85 @@ endfunction
 %! assert (s.light.direction, [0 0.6 0.8], 1e-15);
 %! assert (scene_make (), {"sphere", "spheres", "torus", "mesh"});
 
+%!test
+%! ## an environment light on every scene: the built-in sky, a map array
+%! for n = scene_make ()
+%!   s = scene_make (n{1}, "light", "environment", "map", "sky", "resolution", [8 4],
+%!                   "rotation", 30, "intensity", [1 2 3], "light_samples", 5);
+%!   assert (s.light.type, "environment");
+%!   assert (size (s.light.map), [128 256 3]);
+%!   assert ([s.light.rotation s.light.samples], [30 5]);
+%!   assert (s.light.irradiance, [1 2 3]);
+%! endfor
+%! M = ones (4, 8, 3);
+%! M(1) = -0.01;                                 # ringing: set to 0, counted
+%! s = scene_make ("sphere", "light", "environment", "map", M);
+%! assert ([s.light.map(1) s.light.clamped], [0 1]);
+%! assert (s.light.name, "map");
+%! ## a list of directional lights
+%! s = scene_make ("sphere", "light", "lights", "light_direction", [0 0 2; 1 0 0],
+%!                 "irradiance", [1; 2]);
+%! assert (s.light.directions, [0 0 1; 1 0 0]);
+%! assert (s.light.irradiance, [1 1 1; 2 2 2]);
+
+%!test
+%! ## a light probe of blender-data, read from its OpenEXR file (make deps
+%! ## installs the package; without it the built-in sky, with a warning)
+%! f = "/usr/share/blender/datafiles/studiolights/world/forest.exr";
+%! if (! exist (f, "file"))
+%!   warning ("off", "lafortune:noLightProbe", "local");
+%!   s = scene_make ("sphere", "light", "environment", "map", "forest");
+%!   assert (s.light.name, "sky");
+%!   printf ("skipped: blender-data is not installed (the built-in sky stands in)\n");
+%! else
+%!   s = scene_make ("sphere", "light", "environment", "map", "forest");
+%!   assert (s.light.name, "forest");
+%!   assert (s.light.file, f);
+%!   assert (size (s.light.map), [512 1024 3]);
+%!   assert (all (s.light.map(:) >= 0));
+%!   t = scene_make ("sphere", "light", "environment", "map", f);
+%!   assert (isequal (t.light.map, s.light.map));
+%! endif
+
+%!test
+%! ## a map that is not an OpenEXR file, and one in a file that is corrupt
+%! d = tempname (); mkdir (d);
+%! unwind_protect
+%!   f = fullfile (d, "bad.exr");
+%!   fid = fopen (f, "w"); fwrite (fid, uint8 ([118 47 49 1 2 0 0 0 0 0 7])); fclose (fid);
+%!   try
+%!     scene_make ("sphere", "light", "environment", "map", f);
+%!     error ("no error");
+%!   catch err
+%!     assert (err.identifier, "lafortune:badMap");
+%!   end_try_catch
+%!   g = fullfile (d, "square.exr");
+%!   exrwrite (g, ones (8, 8, 3));
+%!   try
+%!     scene_make ("sphere", "light", "environment", "map", g);
+%!     error ("no error");
+%!   catch err
+%!     assert (err.identifier, "lafortune:badMap");
+%!     assert (! isempty (strfind (err.message, "twice as wide")));
+%!   end_try_catch
+%! unwind_protect_cleanup
+%!   confirm_recursive_rmdir (false, "local");
+%!   rmdir (d, "s");
+%! end_unwind_protect
+
+%!error id=lafortune:badMap scene_make ("sphere", "light", "environment", "map", "/nonexistent/x.exr")
+%!error id=lafortune:badMap scene_make ("sphere", "light", "environment", "map", "nowhere")
+%!error <twice as wide> scene_make ("sphere", "light", "environment", "map", ones (8, 8, 3))
+%!error <non-finite> scene_make ("sphere", "light", "environment", "map", [ones(4, 7, 3), NaN(4, 1, 3)])
+%!error <below 0> scene_make ("sphere", "light", "environment", "map", -ones (4, 8, 3))
+%!error <no light> scene_make ("sphere", "light", "environment", "map", zeros (4, 8, 3))
+%!error id=lafortune:badMap scene_make ("sphere", "light", "environment", "map", {1})
+%!error id=lafortune:badOption scene_make ("sphere", "light", "environment", "map", "sky", "rotation", NaN)
+%!error id=lafortune:badOption scene_make ("sphere", "light", "environment", "map", "sky", "rotation", [1 2])
+%!error id=lafortune:badOption scene_make ("sphere", "light", "environment", "map", "sky", "intensity", -1)
+%!error id=lafortune:badOption scene_make ("sphere", "light", "environment", "map", "sky", "light_samples", 0)
+%!error id=lafortune:badOption scene_make ("sphere", "light", "lights", "light_direction", [0 0 0])
+%!error id=lafortune:badOption scene_make ("sphere", "light", "lights", "light_direction", [0 0 1; 0 1 0], "irradiance", [1 2 3 4])
 %!error id=lafortune:unknownScene scene_make ("teapot")
 %!error <valid scenes: sphere, spheres, torus, mesh> scene_make ("teapot")
 %!error id=lafortune:unknownScene scene_make (3)

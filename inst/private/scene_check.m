@@ -88,12 +88,52 @@ function check_light (lt, fname)
     error ("lafortune:badScene", "%s: SCENE.light needs the fields type and irradiance", fname);
   endif
   E = lt.irradiance;
+  if (strcmp (lt.type, "lights"))
+    if (! isfield (lt, "directions") || ! (isnumeric (lt.directions) && isreal (lt.directions)
+                                          && ndims (lt.directions) == 2
+                                          && columns (lt.directions) == 3
+                                          && rows (lt.directions) >= 1
+                                          && all (isfinite (lt.directions(:)))
+                                          && all (sum (lt.directions .^ 2, 2) > 0)))
+      error ("lafortune:badScene",
+             "%s: SCENE.light.directions must be a K x 3 array of finite non-zero directions",
+             fname);
+    endif
+    if (! (isnumeric (E) && isreal (E) && isequal (size (E), [rows(lt.directions) 3])
+           && all (isfinite (E(:))) && all (E(:) >= 0)))
+      error ("lafortune:badScene",
+             "%s: SCENE.light.irradiance of %d lights must be %d x 3, finite, >= 0", fname,
+             rows (lt.directions), rows (lt.directions));
+    endif
+    return;
+  endif
   if (! (isnumeric (E) && isreal (E) && any (numel (E) == [1 3]) && all (isfinite (E(:)))
          && all (E(:) >= 0)))
     error ("lafortune:badScene", "%s: SCENE.light.irradiance must be a scalar or 1 x 3, >= 0",
            fname);
   endif
   switch (lt.type)
+    case "environment"
+      need = {"map", "rotation", "samples"};
+      if (! all (isfield (lt, need)))
+        error ("lafortune:badScene", "%s: SCENE.light (environment) needs the fields %s",
+               fname, strjoin (need, ", "));
+      endif
+      M = lt.map;
+      if (! (isnumeric (M) && isreal (M) && ndims (M) == 3 && size (M, 3) == 3
+             && columns (M) == 2 * rows (M) && rows (M) >= 4 && all (isfinite (M(:)))
+             && all (M(:) >= 0) && any (M(:) > 0)))
+        error ("lafortune:badScene",
+               "%s: SCENE.light.map must be an H x 2H x 3 radiance array, finite, >= 0, not all 0",
+               fname);
+      endif
+      if (! (isnumeric (lt.rotation) && isscalar (lt.rotation) && isfinite (lt.rotation)))
+        error ("lafortune:badScene", "%s: SCENE.light.rotation must be a finite angle", fname);
+      endif
+      if (! posint (lt.samples))
+        error ("lafortune:badScene", "%s: SCENE.light.samples must be a positive integer",
+               fname);
+      endif
     case "directional"
       if (! isfield (lt, "direction") || ! vec3 (lt.direction) || ! (norm (lt.direction) > 0))
         error ("lafortune:badScene", "%s: SCENE.light.direction must be a nonzero 3-vector",
@@ -105,7 +145,7 @@ function check_light (lt, fname)
       endif
     otherwise
       error ("lafortune:badScene",
-             "%s: unknown light type '%s' (expected directional or point)", fname,
+             "%s: unknown light type '%s' (expected directional, point, environment or lights)", fname,
              arg_str (lt.type));
   endswitch
 endfunction

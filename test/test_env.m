@@ -1,0 +1,150 @@
+## Copyright (C) 2026 The lafortune developers
+## SPDX-License-Identifier: GPL-3.0-or-later
+
+## Environment light: scene_make's maps, rt_render's light samples against
+## brute-force quadrature over the texels, scene_lights, and POV-Ray under
+## the same list of lights.  Run from the package root with
+##   addpath ("inst"); test ("test/test_env.m")
+
+%!function m = models ()
+%!  ## one moderate model of every type, and the built-in measured stand-in
+%!  m = {struct("rho_d", [0.2 0.15 0.1], "Cxy", [-1 -1 -1], "Cz", [0.9 0.9 0.9], "e", [25 25 25]), ...
+%!       brdf_model("blinnphong", "rho_d", [0.2 0.15 0.1], "ks", 0.5, "n", 30), ...
+%!       brdf_model("ward", "rho_d", [0.2 0.15 0.1], "ks", 0.5, "alpha", 0.25), ...
+%!       brdf_model("cooktorrance", "rho_d", [0.2 0.15 0.1], "ks", 0.5, "m", 0.3, "F0", 0.5), ...
+%!       brdf_model("ggx", "rho_d", [0.2 0.15 0.1], "ks", 0.5, "alpha", 0.3, "F0", 0.5), ...
+%!       brdf_model("ashikhminshirley", "rho_d", [0.2 0.15 0.1], "ks", 0.5, "n", 30, "F0", 0.5), ...
+%!       merl_standin("red-plastic")};
+%!endfunction
+
+%!function M = smooth_map ()
+%!  ## a small smooth map with a bright region, 8 x 16
+%!  [c, r] = meshgrid ((0:15) + 0.5, (0:7) + 0.5);
+%!  th = r / 8 * pi; ph = c / 16 * 2 * pi - pi;
+%!  d = cat (3, sin (th) .* sin (ph), cos (th), -sin (th) .* cos (ph));
+%!  s = [-0.5 0.6 0.62]; s /= norm (s);
+%!  g = max (d(:,:,1) * s(1) + d(:,:,2) * s(2) + d(:,:,3) * s(3), 0) .^ 4;
+%!  M = cat (3, 0.2 + 3 * g, 0.25 + 2.5 * g, 0.3 + 2 * g);
+%!endfunction
+
+%!function [D, E] = texel_lights (M, n)
+%!  ## brute force: every texel cut into n x n parts, one light each, with
+%!  ## the part's exact solid angle (an independent reading of the map's
+%!  ## convention: row 1 up, centre column -z, columns toward +x)
+%!  [H, W, ~] = size (M);
+%!  D = zeros (H * W * n * n, 3); E = D; q = 0;
+%!  for r = 1:H
+%!    for sr = 1:n
+%!      t0 = ((r - 1) + (sr - 1) / n) / H * pi; t1 = ((r - 1) + sr / n) / H * pi;
+%!      tm = (t0 + t1) / 2;
+%!      for c = 1:W
+%!        for sc = 1:n
+%!          p = ((c - 1) + (sc - 0.5) / n) / W * 2 * pi - pi;
+%!          q += 1;
+%!          D(q,:) = [sin(tm) * sin(p), cos(tm), -sin(tm) * cos(p)];
+%!          E(q,:) = squeeze (M(r,c,:)).' * (2 * pi / W / n) * (cos (t0) - cos (t1));
+%!        endfor
+%!      endfor
+%!    endfor
+%!  endfor
+%!endfunction
+
+%!test
+%! ## a Lambertian sphere under a constant map: every visible point sees the
+%! ## whole sky, radiance rho L (the sphere casts no shadow on itself)
+%! s = scene_make ("sphere", "size", 24, "spp", 1, "jitter", false, "light", "environment",
+%!                 "map", 0.7 * ones (16, 32, 3), "light_samples", 1024);
+%! lam = struct ("rho_d", [0.8 0.5 0.2], "Cxy", zeros (0, 3), "Cz", zeros (0, 3), "e", zeros (0, 3));
+%! img = rt_render (s, lam, "progress", false);
+%! in = img(:,:,1) > 0;
+%! for c = 1:3
+%!   v = img(:,:,c)(in);
+%!   assert (mean (v), 0.7 * lam.rho_d(c), 2e-3 * lam.rho_d(c));
+%!   assert (max (abs (v - 0.7 * lam.rho_d(c))), 0, 0.03 * lam.rho_d(c));
+%! endfor
+%! ## the intensity scales it, the rotation does not change it
+%! s.light.irradiance = 2; s.light.rotation = 33;
+%! img2 = rt_render (s, lam, "progress", false);
+%! assert (mean (img2(:,:,2)(in)), 2 * 0.7 * 0.5, 2e-3);
+
+%!test
+%! ## every model type and the measured data converge to the brute-force
+%! ## quadrature over every texel of a small map
+%! M = smooth_map ();
+%! s = scene_make ("sphere", "size", 12, "spp", 1, "jitter", false, "light", "environment",
+%!                 "map", M, "light_samples", 4096);
+%! [D, E] = texel_lights (M, 6);
+%! b = scene_make ("sphere", "size", 12, "spp", 1, "jitter", false, "light", "lights",
+%!                 "light_direction", D, "irradiance", E);
+%! mm = models ();
+%! for i = 1:numel (mm)
+%!   ref = rt_render (b, mm{i}, "progress", false);
+%!   img = rt_render (s, mm{i}, "progress", false);
+%!   in = ref(:,:,1) > 0;
+%!   err = sqrt (mean ((img(:) - ref(:)) .^ 2)) / mean (ref(in));
+%!   assert (err < 0.01, "model %d: relative rms %.4f", i, err);
+%!   ## and the sampled mean is unbiased: the image's sum within 0.5%
+%!   assert (abs (sum (img(:)) / sum (ref(:)) - 1) < 5e-3, "model %d: sum", i);
+%! endfor
+
+%!test
+%! ## the samples converge: 16 times the samples, about a quarter the error
+%! M = smooth_map ();
+%! mm = models ();
+%! [D, E] = texel_lights (M, 6);
+%! b = scene_make ("sphere", "size", 12, "spp", 1, "jitter", false, "light", "lights",
+%!                 "light_direction", D, "irradiance", E);
+%! ref = rt_render (b, mm{1}, "progress", false);
+%! e = zeros (1, 2);
+%! ns = [64 1024];
+%! for j = 1:2
+%!   s = scene_make ("sphere", "size", 12, "spp", 1, "jitter", false, "light", "environment",
+%!                   "map", M, "light_samples", ns(j));
+%!   img = rt_render (s, mm{1}, "progress", false);
+%!   e(j) = sqrt (mean ((img(:) - ref(:)) .^ 2));
+%! endfor
+%! assert (e(1) / e(2) > 2.5 && e(1) / e(2) < 16);
+
+%!test
+%! ## shadow rays go into the scene's own geometry: the plane under the
+%! ## spheres is darker under a sphere than in the open, and the spheres'
+%! ## tops see more sky than their bottoms (the plane hides the lower sky)
+%! s = scene_make ("spheres", "size", [48 64], "spp", 1, "jitter", false,
+%!                 "light", "environment", "map", ones (8, 16, 3), "light_samples", 256);
+%! lam = struct ("rho_d", [0.5 0.5 0.5], "Cxy", zeros (0, 3), "Cz", zeros (0, 3), "e", zeros (0, 3));
+%! img = rt_render (s, lam, "progress", false);
+%! g = img(:,:,2);
+%! ## a plane point far from the spheres sees the upper half of the sky: rho L
+%! assert (g(end, 1), 0.5, 0.03);
+%! ## the contact shadow under the big sphere is much darker
+%! assert (min (g(:)) < 0.25);
+%! s.light.samples = 64;
+%! [a, ia, C] = rt_render (s, lam, "progress", false);
+%! m2 = brdf_model ("ggx", "rho_d", 0.1, "ks", 0.5, "alpha", 0.2, "F0", 0.9);
+%! ## trace once, shade many: bit for bit the full render
+%! [b, ib] = rt_render (s, m2, "cache", C, "progress", false);
+%! assert (ib.cached && ib.evaluations == ia.evaluations);
+%! assert (isequal (b, rt_render (s, m2, "progress", false)));
+%! assert (isequal (a, rt_render (s, lam, "cache", C, "progress", false)));
+%! ## and the samples do not depend on how many rays are traced at once
+%! assert (isequal (rt_render (s, m2, "chunk", 3000, "progress", false),
+%!                  rt_render (s, m2, "progress", false)));
+
+%!test
+%! ## the measured data and every fit see the same light samples: a fit
+%! ## rendered with the measured data's cache is the full render, and the
+%! ## light_samples option overrides the scene's count
+%! s = scene_make ("sphere", "size", 16, "spp", 2, "light", "environment", "map", "sky",
+%!                 "light_samples", 8);
+%! brdf = merl_standin ("green-metallic-paint");
+%! [a, ia, C] = rt_render (s, brdf, "progress", false, "light_samples", 16);
+%! assert (ia.light_samples, 16);
+%! fit = models (){1};
+%! assert (isequal (rt_render (s, fit, "cache", C, "progress", false, "light_samples", 16),
+%!                  rt_render (s, fit, "progress", false, "light_samples", 16)));
+%!error <same scene and options>
+%! s = scene_make ("sphere", "size", 8, "spp", 1, "light", "environment", "map", "sky",
+%!                 "light_samples", 8);
+%! lam = struct ("rho_d", [0.5 0.5 0.5], "Cxy", zeros (0, 3), "Cz", zeros (0, 3), "e", zeros (0, 3));
+%! [~, ~, C] = rt_render (s, lam, "progress", false);
+%! rt_render (s, lam, "cache", C, "progress", false, "light_samples", 9);
