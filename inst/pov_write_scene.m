@@ -187,14 +187,37 @@ function info = pov_write_scene (scene, material, file, varargin)
            "%s: the tables need a directional light (then the shading depends on angle (N, L), angle (N, V) and angle (L, V) only), got a %s light; rt_render renders it",
            fname, light.type);
   endif
-  persp = strcmp (cam.type, "perspective");
   if (! ischar (file) || isempty (file))
     error ("lafortune:badFile", "%s: FILE must be a non-empty string", fname);
   endif
   L = double (light.direction(:)');
   L /= norm (L);
-  V = -cam.f;
 
+  T = light_tables (scene, material, opt, cam, kind, L, []);
+
+  ## write
+  [osdl, nfd] = pov_sdl ("objects", scene.objects, T.keep, T.faces);
+  parts = [{pov_sdl("header", scene, material, opt, T.tabs, T.rng_i, T.rng_o, T.peak, T.C), ...
+            pov_sdl("camera", cam, scene), pov_sdl("light", scene, L, cam)}, ...
+           T.body, {pov_sdl("texture", find (T.kept)), osdl}];
+  atomic_write (file, fname, @(fid) write_text (fid, parts));
+  d = dir (file);
+  tabs = T.tabs;
+  info = struct ("file", file, "bytes", d.bytes, "terms", tabs,
+                 "entries", sum ([tabs.outer]) + sum ([tabs.inner]), "gamma", T.gl,
+                 "ti_range", T.rng_i, "to_range", T.rng_o, "peak", T.peak, "level", T.level,
+                 "objects", T.keep,
+                 "faces_dropped", nfd, "dense", T.ndense, "time", toc (t0));
+endfunction
+
+
+## The tables of one directional light L: what the view reaches (pov_cast,
+## or its geometry G when given), the terms tabulated densely by
+## scene_slice, the terms left out, and the SDL of each kept term's table.
+function T = light_tables (scene, material, opt, cam, kind, L, G)
+  fname = "pov_write_scene";
+  persp = strcmp (cam.type, "perspective");
+  V = -cam.f;
   ## what the view reaches
   top = pi/2 - 1e-6;             # scene_slice is 0 from pi/2 on
   ## the inner maps' angle: theta_h = angle (N, H), H halfway between L and
@@ -203,7 +226,7 @@ function info = pov_write_scene (scene, material, file, varargin)
   ## (ti, to), where to grows as theta_h squared), else to
   C = pov_tables ("inner_coord", persp, L, V);
   if (opt.crop || opt.cull || persp)     # the gamma levels need the points too
-    S = pov_cast (scene, cam, L);
+    S = pov_cast (scene, cam, L, G);
     S.u = pov_tables ("inner_of", S.ti, S.to, C);
   endif
   if (opt.crop)
@@ -322,18 +345,9 @@ function info = pov_write_scene (scene, material, file, varargin)
     endif
   endfor
 
-  ## write
-  [osdl, nfd] = pov_sdl ("objects", scene.objects, keep, faces);
-  parts = [{pov_sdl("header", scene, material, opt, tabs, rng_i, rng_o, peak, C), ...
-            pov_sdl("camera", cam, scene), pov_sdl("light", scene, L, cam)}, ...
-           body, {pov_sdl("texture", find (kept)), osdl}];
-  atomic_write (file, fname, @(fid) write_text (fid, parts));
-  d = dir (file);
-  info = struct ("file", file, "bytes", d.bytes, "terms", tabs,
-                 "entries", sum ([tabs.outer]) + sum ([tabs.inner]), "gamma", gl,
-                 "ti_range", rng_i, "to_range", rng_o, "peak", peak, "level", level,
-                 "objects", keep,
-                 "faces_dropped", nfd, "dense", ndense, "time", toc (t0));
+  T = struct ("body", {body}, "tabs", tabs, "kept", kept, "keep", keep, "faces", {faces},
+              "rng_i", rng_i, "rng_o", rng_o, "peak", peak, "level", level, "gl", gl,
+              "ndense", ndense, "C", C);
 endfunction
 
 ## The knots and the SDL of one term's table at one gamma level: outer map

@@ -2,7 +2,8 @@
 ## SPDX-License-Identifier: GPL-3.0-or-later
 
 ## -*- texinfo -*-
-## @deftypefn {} {@var{S} =} pov_cast (@var{scene}, @var{cam}, @var{L})
+## @deftypefn  {} {[@var{S}, @var{G}] =} pov_cast (@var{scene}, @var{cam}, @var{L})
+## @deftypefnx {} {[@var{S}, @var{G}] =} pov_cast (@var{scene}, @var{cam}, @var{L}, @var{G})
 ## What the view of @var{scene} reaches (private, for @code{pov_write_scene}).
 ##
 ## Rays are cast on a half-pixel grid ((2W+1) x (2H+1) rays: the pixel centres,
@@ -20,8 +21,58 @@
 ## or may cast a shadow on a sample; @code{faces}: cell with, for meshes, the
 ## F x 1 logical mask of faces in the view or possibly shadowing a sample
 ## (conservative bounding-box tests).
+##
+## @var{G} is what does not depend on the light (the samples' points,
+## normals toward the viewer, view directions, the objects and faces in
+## the view): pass it back for another light of the same view, and the
+## rays are not cast again.
 ## @end deftypefn
-function S = pov_cast (scene, cam, L)
+function [S, G] = pov_cast (scene, cam, L, G = [])
+  ob = scene.objects;
+  nob = numel (ob);
+  if (isempty (G))
+    G = cast_view (scene, cam);
+  endif
+  P = G.P;
+  N = G.N;
+  V = G.V;
+  keep = G.keep;
+  faces = G.faces;
+  if (isempty (L))
+    Lp = double (scene.light.position(:)') - P;
+    Lp ./= sqrt (sum (Lp .^ 2, 2));
+  else
+    Lp = repmat (L, rows (P), 1);
+  endif
+  cl = sum (N .* Lp, 2);
+  lit = cl > 0;
+  S.P = P(lit,:);
+  S.ti = acos (min (cl(lit), 1));
+  S.to = acos (min (max (sum (N(lit,:) .* V(lit,:), 2), -1), 1));
+  S.gamma = acos (min (max (sum (Lp(lit,:) .* V(lit,:), 2), -1), 1));
+  ## what may cast a shadow on a sample
+  for k = 1:nob
+    switch (ob(k).type)
+      case "sphere"
+        if (! keep(k))
+          keep(k) = shadows_sphere (S.P, L, scene.light, double (ob(k).center(:)'),
+                                    double (ob(k).radius));
+        endif
+      case "plane"
+        keep(k) = true;
+      case "mesh"
+        sh = shadows_faces (S.P, L, double (ob(k).vertices), double (ob(k).faces));
+        faces{k} |= sh;
+        keep(k) = any (faces{k});
+    endswitch
+  endfor
+  S.keep = keep;
+  S.faces = faces;
+endfunction
+
+## the samples of the view: points, normals toward the viewer, view
+## directions, and the objects and mesh faces in the view
+function G = cast_view (scene, cam)
   ob = scene.objects;
   nob = numel (ob);
   ## rays on the half-pixel grid, against the spheres and planes
@@ -65,36 +116,7 @@ function S = pov_cast (scene, cam, L)
     endif
   endfor
   N .*= sign (sum (N .* V, 2) + (sum (N .* V, 2) == 0));     # toward the viewer
-  if (isempty (L))
-    Lp = double (scene.light.position(:)') - P;
-    Lp ./= sqrt (sum (Lp .^ 2, 2));
-  else
-    Lp = repmat (L, rows (P), 1);
-  endif
-  cl = sum (N .* Lp, 2);
-  lit = cl > 0;
-  S.P = P(lit,:);
-  S.ti = acos (min (cl(lit), 1));
-  S.to = acos (min (max (sum (N(lit,:) .* V(lit,:), 2), -1), 1));
-  S.gamma = acos (min (max (sum (Lp(lit,:) .* V(lit,:), 2), -1), 1));
-  ## what may cast a shadow on a sample
-  for k = 1:nob
-    switch (ob(k).type)
-      case "sphere"
-        if (! keep(k))
-          keep(k) = shadows_sphere (S.P, L, scene.light, double (ob(k).center(:)'),
-                                    double (ob(k).radius));
-        endif
-      case "plane"
-        keep(k) = true;
-      case "mesh"
-        sh = shadows_faces (S.P, L, double (ob(k).vertices), double (ob(k).faces));
-        faces{k} |= sh;
-        keep(k) = any (faces{k});
-    endswitch
-  endfor
-  S.keep = keep;
-  S.faces = faces;
+  G = struct ("P", P, "N", N, "V", V, "keep", keep, "faces", {faces});
 endfunction
 
 ## faces whose projected bounding box overlaps the view (one pixel margin)
