@@ -15,7 +15,7 @@
 ##
 ## Options (others go to @code{pov_write_scene}: @qcode{"entries"},
 ## @qcode{"knots"}, @qcode{"table_tol"}, @qcode{"lobe_tol"}, @qcode{"crop"},
-## @qcode{"cull"}, @qcode{"pad"}, @qcode{"dense"}):
+## @qcode{"cull"}, @qcode{"pad"}, @qcode{"dense"}, @qcode{"lights"}):
 ## @table @asis
 ## @item @qcode{"antialias"} (0)
 ## false or 0: one ray through each pixel centre (what @code{rt_render}
@@ -35,11 +35,17 @@
 ## @item @qcode{"threads"} (0)
 ## Render threads (@code{+WT}); 0 leaves POV-Ray's default (all cores).
 ## @item @qcode{"keep"} (@qcode{""})
-## File name to copy the generated @file{.pov} scene to.
+## File name to copy the generated @file{.pov} scene to (with several
+## lights, their include files go beside it).
 ## @item @qcode{"povray"} (@qcode{"povray"})
 ## The POV-Ray program.
 ## @end table
 ##
+## A scene with several lights or an environment light
+## (@code{pov_write_scene}'s animation, one frame per light) is rendered
+## frame by frame in up to 32 POV-Ray processes at once (POV-Ray idles
+## between frames; each process then has one render thread unless
+## @qcode{"threads"} says otherwise), and the frames are added up.
 ## @var{info} has the fields of @code{pov_write_scene}'s info (@code{bytes},
 ## @code{terms}, @code{entries}, @dots{}) and @code{time} (seconds, the
 ## @command{povray} run), @code{parse_time}, @code{trace_time} (POV-Ray's
@@ -103,12 +109,17 @@ function [img, info] = pov_render (scene, material, varargin)
     error ("lafortune:unwritable", "%s: cannot make the folder '%s': %s", fname, d, msg);
   endif
   unwind_protect
-    pov = fullfile (d, "scene.pov");
+    base = "scene";
+    if (! isempty (opt.keep))                 # its lights' files are named after it
+      [~, base] = fileparts (opt.keep);
+      base = regexprep (base, "[^A-Za-z0-9_.-]", "_");
+    endif
+    pov = fullfile (d, [base ".pov"]);
     t0 = tic ();
     winfo = pov_write_scene (scene, material, pov, pass{:});
     wtime = toc (t0);
-    args = sprintf ("+Iscene.pov +Oimage.exr +FE +W%d +H%d -D +GS -GR -GP File_Gamma=1.0",
-                    scene.width, scene.height);
+    args = sprintf ("+I%s.pov +Oimage.exr +FE +W%d +H%d -D +GS -GR -GP File_Gamma=1.0",
+                    base, scene.width, scene.height);
     if (aa)
       args = [args, sprintf(" +A0.0 +AM1 +R%d", aa)];
       if (opt.jitter)
@@ -119,20 +130,68 @@ function [img, info] = pov_render (scene, material, varargin)
     else
       args = [args, " -A"];
     endif
+    K = 0;
+    if (isfield (winfo, "frames"))            # lights: frame k is light k
+      K = winfo.frames;
+      args = [args, sprintf(" +KFI1 +KFF%d", K)];
+    endif
+    ## POV-Ray idles about 0.25 s between frames (its front end polls), so
+    ## the frames of many lights go to several processes at once, each
+    ## with one render thread unless "threads" says otherwise
+    np = 1;
+    if (K > 1)
+      np = min (K, 32);
+      if (! th)
+        th = 1;
+      endif
+    endif
     if (th)
       args = [args, sprintf(" +WT%d", th)];
     endif
-    cmd = sprintf ("cd %s && %s %s 2>&1", shell_quote (d), shell_quote (exe), args);
-    t0 = tic ();
-    [st, out] = system (cmd);
-    rtime = toc (t0);
-    exr = fullfile (d, "image.exr");
-    if (st != 0 || ! exist (exr, "file"))
+    if (np == 1)
+      cmd = sprintf ("cd %s && %s %s 2>&1", shell_quote (d), shell_quote (exe), args);
+      t0 = tic ();
+      [st, out] = system (cmd);
+      rtime = toc (t0);
+    else
+      e = round (linspace (0, K, np + 1));
+      run = "";
+      for j = 1:np
+        run = [run, sprintf("(%s %s +SF%d +EF%d > log%d.txt 2>&1; echo $? > status%d.txt) & ",
+                            shell_quote (exe), args, e(j) + 1, e(j+1), j, j)];
+      endfor
+      cmd = sprintf ("cd %s && { %swait; }", shell_quote (d), run);
+      t0 = tic ();
+      system (cmd);
+      rtime = toc (t0);
+      st = 0;
+      out = "";
+      for j = 1:np
+        sj = str2double (fileread_or (fullfile (d, sprintf ("status%d.txt", j)), "1"));
+        oj = fileread_or (fullfile (d, sprintf ("log%d.txt", j)), "");
+        if (sj != 0 && st == 0)
+          st = sj;
+          out = [oj, out];
+        else
+          out = [out, oj];
+        endif
+      endfor
+    endif
+    if (K)
+      exr = arrayfun (@(k) fullfile (d, sprintf ("image%0*d.exr", numel (num2str (K)), k)),
+                      1:K, "UniformOutput", false);
+    else
+      exr = {fullfile(d, "image.exr")};
+    endif
+    if (st != 0 || ! all (cellfun (@(f) exist (f, "file") == 2, exr)))
       error ("lafortune:povFailed", "%s: POV-Ray failed (exit status %d): %s", fname, st,
              pov_message (out));
     endif
-    img = exrread (exr);
-    img = double (img(:,:,1:3));
+    img = 0;
+    for k = 1:numel (exr)                     # the lights' frames sum to the image
+      im = exrread (exr{k});
+      img += double (im(:,:,1:3));
+    endfor
     if (! isempty (opt.keep))
       tmp = atomic_tmp (opt.keep, fname);
       [ok, msg] = copyfile (pov, tmp, "f");
@@ -142,6 +201,20 @@ function [img, info] = pov_render (scene, material, varargin)
                opt.keep, msg);
       endif
       atomic_commit (tmp, opt.keep, fname);
+      if (K)                                  # the lights' files, beside it
+        kd = fileparts (opt.keep);
+        for k = 1:K
+          inc = winfo.includes{k};
+          tmp = atomic_tmp (fullfile (kd, inc), fname);
+          [ok, msg] = copyfile (fullfile (d, inc), tmp, "f");
+          if (! ok)
+            unlink (tmp);
+            error ("lafortune:unwritable", "%s: cannot copy '%s' beside '%s': %s", fname,
+                   inc, opt.keep, msg);
+          endif
+          atomic_commit (tmp, fullfile (kd, inc), fname);
+        endfor
+      endif
     endif
   unwind_protect_cleanup
     confirm_recursive_rmdir (false, "local");
@@ -155,6 +228,13 @@ function [img, info] = pov_render (scene, material, varargin)
   info.trace_time = stat_time (out, "Trace Time");
   info.command = cmd;
   info.output = out;
+endfunction
+
+function s = fileread_or (f, dflt)
+  s = dflt;
+  if (exist (f, "file"))
+    s = fileread (f);
+  endif
 endfunction
 
 function exe = find_povray (p, fname)

@@ -111,6 +111,9 @@
 ## @item @qcode{"gamma_tol"} (0.03)
 ## Perspective camera: the error allowed when interpolating between levels
 ## of gamma, relative to the largest radiance (see above).
+## @item @qcode{"lights"} (64)
+## An environment light becomes this many directional lights
+## (@code{scene_lights}).
 ## @item @qcode{"dense"} (0: automatic)
 ## Points per axis of the dense tabulation the entries are chosen from;
 ## automatic is max (257, 2 @qcode{"entries"} + 1).
@@ -127,7 +130,11 @@
 ## radiance in the view), @code{level} (the radiance level the error
 ## allowed is relative to),
 ## @code{objects} (kept, logical), @code{faces_dropped}, @code{dense} and
-## @code{time} (seconds).
+## @code{time} (seconds).  For several lights: @code{frames} and
+## @code{lights} (K), @code{includes} (the K include files' names),
+## @code{kept} (the terms kept per light), @code{entries} and @code{bytes}
+## of all files; @code{terms}, @code{gamma}, the ranges and @code{level}
+## are empty.
 ##
 ## @strong{A perspective camera.}  The direction V toward the viewer then
 ## changes over the surfaces, and with it the angle gamma = angle (L, V), a
@@ -147,6 +154,21 @@
 ## pixel centres: four spheres on a plane, 13 levels, 6.1 MB, 71 dB; the
 ## 100k-triangle Happy Buddha, 5 levels at @qcode{"gamma_tol"} 0.05, 6.3 MB,
 ## 55.6 dB).
+##
+## @strong{Several lights, an environment.}  POV-Ray gives a surface one
+## pigment for all its lights, and has no glossy environment lighting (its
+## radiosity is diffuse only), while the tables above hold one light's
+## radiance.  A scene with a list of directional lights (@code{scene_make}
+## option @qcode{"light"}, @qcode{"lights"}, or @code{scene_lights}) is
+## therefore written as an animation of K frames, one per light: @var{file}
+## holds the camera and the objects (those that any light needs) and
+## includes, in frame k, the file @file{BASE_Lkkkk.inc} beside it (BASE the
+## name of @var{file} without its extension), which holds light k and its
+## tables, made as above for that light alone; the K frames' images add up
+## to the image (@code{pov_render} renders and adds them).  The background
+## is in frame 1 only.  An environment light (@qcode{"light"},
+## @qcode{"environment"}) is first cut into @qcode{"lights"} directional
+## lights by @code{scene_lights}.
 ##
 ## A point light (the angle to the light changes over the surfaces as well,
 ## a fourth table dimension) gives the error @code{lafortune:povUnsupported};
@@ -171,7 +193,7 @@ function info = pov_write_scene (scene, material, file, varargin)
   opt = parse_opts (varargin, fname,
                     struct ("entries", 256, "knots", "adaptive", "table_tol", 1e-3,
                             "lobe_tol", 1e-4, "crop", true, "cull", true, "pad", 0.02,
-                            "dense", 0, "gamma_tol", 0.03));
+                            "dense", 0, "gamma_tol", 0.03, "lights", 64));
   opt = check_opts (opt, fname);
   scene_check (scene, fname);
   cam = scene_camera (scene);
@@ -182,13 +204,21 @@ function info = pov_write_scene (scene, material, file, varargin)
            fname, class (material));
   endif
   light = scene.light;
+  if (! ischar (file) || isempty (file))
+    error ("lafortune:badFile", "%s: FILE must be a non-empty string", fname);
+  endif
+  if (strcmp (light.type, "environment"))
+    scene = scene_lights (scene, opt.lights);
+    light = scene.light;
+  endif
+  if (strcmp (light.type, "lights"))
+    info = write_lights (scene, material, file, opt, cam, kind, t0);
+    return;
+  endif
   if (! strcmp (light.type, "directional"))
     error ("lafortune:povUnsupported",
            "%s: the tables need a directional light (then the shading depends on angle (N, L), angle (N, V) and angle (L, V) only), got a %s light; rt_render renders it",
            fname, light.type);
-  endif
-  if (! ischar (file) || isempty (file))
-    error ("lafortune:badFile", "%s: FILE must be a non-empty string", fname);
   endif
   L = double (light.direction(:)');
   L /= norm (L);
@@ -226,7 +256,7 @@ function T = light_tables (scene, material, opt, cam, kind, L, G)
   ## (ti, to), where to grows as theta_h squared), else to
   C = pov_tables ("inner_coord", persp, L, V);
   if (opt.crop || opt.cull || persp)     # the gamma levels need the points too
-    S = pov_cast (scene, cam, L, G);
+    [S, S.G] = pov_cast (scene, cam, L, G);
     S.u = pov_tables ("inner_of", S.ti, S.to, C);
   endif
   if (opt.crop)
@@ -347,7 +377,10 @@ function T = light_tables (scene, material, opt, cam, kind, L, G)
 
   T = struct ("body", {body}, "tabs", tabs, "kept", kept, "keep", keep, "faces", {faces},
               "rng_i", rng_i, "rng_o", rng_o, "peak", peak, "level", level, "gl", gl,
-              "ndense", ndense, "C", C);
+              "ndense", ndense, "C", C, "G", []);
+  if (exist ("S", "var") && isfield (S, "G"))
+    T.G = S.G;
+  endif
 endfunction
 
 ## The knots and the SDL of one term's table at one gamma level: outer map
@@ -362,6 +395,91 @@ function [sdl, no, ni] = term_sdl (Dq, tol, peak, opt, L, C, name, id, persp)
     inner = sprintf ("slope { %s }", pov_sdl ("vec", C.dir));
   endif
   sdl = pov_sdl ("table", id, name, T, Dq.ti, Dq.to, io, Ki, L, inner);
+endfunction
+
+## K directional lights: one POV-Ray frame per light.  POV-Ray's surfaces
+## take one pigment for every light, but each light needs its own table
+## (the radiance depends on the angles to that light), so FILE renders
+## light k in frame k (+KFI1 +KFF<K>): it includes the file BASE_Lkkkk.inc
+## beside it, which holds the light and its tables; the frames' images sum
+## to the image (pov_render does it).  The geometry is written once, in
+## FILE, with the objects any light needs.
+function info = write_lights (scene, material, file, opt, cam, kind, t0)
+  fname = "pov_write_scene";
+  lt = scene.light;
+  K = rows (lt.directions);
+  [dd, base] = fileparts (file);
+  nob = numel (scene.objects);
+  keep = false (1, nob);
+  faces = cell (1, nob);
+  incs = cell (1, K);
+  G = [];
+  bytes = 0;
+  entries = 0;
+  peak = 0;
+  kept = zeros (1, K);
+  for k = 1:K
+    L = double (lt.directions(k,:));
+    L /= norm (L);
+    sk = scene;
+    sk.light = struct ("type", "directional", "direction", L, "position", [],
+                       "irradiance", double (lt.irradiance(k,:)));
+    incs{k} = sprintf ("%s_L%04d.inc", base, k);
+    head = sprintf ("// light %d of %d: direction %s, irradiance %s\n", k, K,
+                    pov_sdl ("vec", L), pov_sdl ("vec", sk.light.irradiance));
+    if (any (sk.light.irradiance > 0))
+      T = light_tables (sk, material, opt, cam, kind, L, G);
+      G = T.G;
+      keep |= T.keep;
+      for q = 1:nob
+        if (! isempty (T.faces{q}))
+          if (isempty (faces{q}))
+            faces{q} = T.faces{q};
+          else
+            faces{q} |= T.faces{q};
+          endif
+        endif
+      endfor
+      parts = [{head, pov_sdl("light", sk, L, cam)}, T.body, {pov_sdl("texture", find (T.kept))}];
+      entries += sum ([T.tabs.outer]) + sum ([T.tabs.inner]);
+      peak = max (peak, T.peak);
+      kept(k) = nnz (T.kept);
+    else
+      parts = {head, pov_sdl("texture", [])};
+    endif
+    f = fullfile (dd, incs{k});
+    atomic_write (f, fname, @(fid) write_text (fid, parts));
+    d = dir (f);
+    bytes += d.bytes;
+  endfor
+  for q = 1:nob                        # an object no light needs: left out
+    if (! isempty (faces{q}))
+      keep(q) = any (faces{q});
+    endif
+  endfor
+  if (! opt.cull)
+    keep = true (1, nob);
+    faces = cell (1, nob);
+  endif
+  [osdl, nfd] = pov_sdl ("objects", scene.objects, keep, faces);
+  bg = double (scene.background(:)') .* [1 1 1];
+  hdr = sprintf (["// POV-Ray 3.7 scene written by pov_write_scene (lafortune package)\n" ...
+                  "// scene '%s', material '%s', %d x %d pixels, %d directional lights, one per frame:\n" ...
+                  "// frame k includes %s_Lkkkk.inc (light k and its tables); the image is the sum of the frames\n" ...
+                  "// render: povray +I<this> +O<out>.exr +FE +W%d +H%d -A File_Gamma=1.0 +KFI1 +KFF%d\n" ...
+                  "#version 3.7;\nglobal_settings { assumed_gamma 1.0 ambient_light rgb 0 }\n" ...
+                  "#if (frame_number < 1 | frame_number > %d)\n" ...
+                  "#error \"render this scene as an animation, +KFI1 +KFF%d: frame k is light k\"\n#end\n" ...
+                  "#if (frame_number = 1) background { rgb %s } #else background { rgb 0 } #end\n" ...
+                  "#include concat (\"%s_L\", str (frame_number, -4, 0), \".inc\")\n"],
+                 name_of (scene), name_of (material), scene.width, scene.height, K, base,
+                 scene.width, scene.height, K, K, K, pov_sdl ("vec", bg), base);
+  atomic_write (file, fname, @(fid) write_text (fid, {hdr, pov_sdl("camera", cam, scene), osdl}));
+  d = dir (file);
+  info = struct ("file", file, "bytes", bytes + d.bytes, "terms", [], "entries", entries,
+                 "gamma", [], "ti_range", [], "to_range", [], "peak", peak, "level", [],
+                 "objects", keep, "faces_dropped", nfd, "dense", opt.dense, "time", toc (t0),
+                 "frames", K, "includes", {incs}, "lights", K, "kept", kept);
 endfunction
 
 function opt = check_opts (opt, fname)
@@ -385,6 +503,10 @@ function opt = check_opts (opt, fname)
     endif
     opt.(nm{1}) = logical (v);
   endfor
+  K = opt.lights;
+  if (! (isnumeric (K) && isscalar (K) && isreal (K) && K >= 1 && K == fix (K)))
+    error ("lafortune:badOption", "%s: \"lights\" must be a positive integer", fname);
+  endif
   d = opt.dense;
   if (! isscalar (d) || ! isnumeric (d) || d != fix (d) || (d != 0 && d < opt.entries))
     error ("lafortune:badOption", "%s: \"dense\" must be 0 (automatic) or an integer >= \"entries\"",

@@ -9,8 +9,9 @@
 ## so a trace keeps them and not the directions).  A Lafortune model goes
 ## through @code{lafortune_core} (ux vx + uy vy = wi . wo - cos ti cos to),
 ## another type through @code{model_core}, a MERL material through
-## @code{merl_eval} at the directions wi = (sin ti, 0, cos ti) and wo at
-## the azimuth that gives wi . wo.
+## @code{merl_eval} at the pair of directions @code{slice_dirs} makes of
+## the three (the side of the mirror pair that @code{scene_slice}, so the
+## slice tables of both renderers, take).
 ## @end deftypefn
 function f = material_x (material, X)
   n = rows (X);
@@ -33,14 +34,10 @@ function f = material_x (material, X)
         f(:,c) = model_core (def, model_pack (material, def, c), X);
       endfor
     case "merl"
-      si = sqrt (max (1 - X(:,1) .^ 2, 0));
-      so = sqrt (max (1 - X(:,2) .^ 2, 0));
-      cp = (X(:,3) - X(:,1) .* X(:,2)) ./ max (si .* so, realmin);
-      cp = min (max (cp, -1), 1);
-      cp(si .* so == 0) = 1;
-      sp = sqrt (1 - cp .^ 2);
-      wi = [si, zeros(n, 1), X(:,1)];
-      wo = [so .* cp, so .* sp, X(:,2)];
+      ## the pair as scene_slice builds it (slice_dirs: wo in the xz plane,
+      ## wi at the azimuth that gives wi . wo): a measured table is not
+      ## exactly mirror-symmetric, and both renderers' tables take this side
+      [wi, wo] = slice_dirs (acos (min (X(:,1), 1)), acos (min (X(:,2), 1)), X(:,3));
       f = merl_eval (material, wi, wo);
   endswitch
 endfunction
