@@ -8,15 +8,21 @@
 // bit.  Every operation is the one lafortune_core.m makes, in its order:
 // built with -ffp-contract=off (src/Makefile), so that no multiply-add is
 // fused, and with std::fmin/fmax, which ignore a NaN as Octave's min and max
-// do.  Single-threaded: the fit's tables are a few thousand rows.
+// do.  Values without the Jacobian on many rows (a render's light samples)
+// are shared out over the machine's cores, each thread its own rows (every
+// row's arithmetic is the same, so the result is the same bit for bit);
+// the fit's calls (a few thousand rows, with the Jacobian) stay on one.
 
 #include <octave/oct.h>
 
 #include "oct_guard.h"
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <string>
+#include <thread>
+#include <vector>
 
 namespace
 {
@@ -130,9 +136,44 @@ doubles), @var{sxy} and @var{sz} real double columns of equal length.\n\
     double *pf = f.fortran_vec ();
     double *pJ = jac ? J.fortran_vec () : nullptr;
     const octave_idx_type nl = (np - 1) / 3;
-    for (octave_idx_type k = 0; k < nl; k++)
-      add_lobe (p(3 * k + 1), p(3 * k + 2), p(3 * k + 3), sxy.data (), sz.data (), n,
-                pf, pJ, 3 * k + 1);
+    const double *pp = p.data ();
+    const double *px = sxy.data ();
+    const double *pz = sz.data ();
+    if (jac)
+      {
+        for (octave_idx_type k = 0; k < nl; k++)
+          add_lobe (pp[3 * k + 1], pp[3 * k + 2], pp[3 * k + 3], px, pz, n, pf, pJ, 3 * k + 1);
+        return;
+      }
+    // rows [a, b) of every lobe
+    auto rows = [=] (octave_idx_type a, octave_idx_type b)
+    {
+      for (octave_idx_type k = 0; k < nl; k++)
+        add_lobe (pp[3 * k + 1], pp[3 * k + 2], pp[3 * k + 3], px + a, pz + a, b - a,
+                  pf + a, nullptr, 0);
+    };
+    const octave_idx_type per = 65536;         // rows worth a thread
+    unsigned nt = std::max (1u, std::min (std::thread::hardware_concurrency (), 8u));
+    nt = static_cast<unsigned> (std::min<octave_idx_type> (nt, std::max<octave_idx_type> (1, n / per)));
+    std::vector<octave_idx_type> cut (nt + 1);
+    for (unsigned t = 0; t <= nt; t++)
+      cut[t] = n * t / nt;
+    std::vector<std::thread> pool;
+    unsigned started = 1;                      // range 0 is this thread's
+    try
+      {
+        for (unsigned t = 1; t < nt; t++, started++)
+          pool.emplace_back (rows, cut[t], cut[t + 1]);
+      }
+    catch (...)
+      {
+        // no more threads: the ranges not started are done here
+      }
+    rows (cut[0], cut[1]);
+    for (unsigned t = started; t < nt; t++)
+      rows (cut[t], cut[t + 1]);
+    for (auto& th : pool)
+      th.join ();
   });
   octave_value_list out;
   out(0) = f;

@@ -47,6 +47,28 @@
 %!endfunction
 
 %!test
+%! ## values on many rows (a render's light samples), which the oct-file
+%! ## shares out over threads: still the Octave arithmetic, bit for bit, and
+%! ## the ends of every thread's rows (odd counts) included
+%! here = pwd ();
+%! state = rand ("state");
+%! unwind_protect
+%!   cd (fullfile (fileparts (which ("lafortune_eval")), "private"));
+%!   rand ("state", 3);
+%!   for n = [65535 131073 400001]
+%!     sxy = 2 * rand (n, 1) - 1; sz = rand (n, 1);
+%!     sxy(1:977:end) = NaN; sz(5:1013:end) = 0;
+%!     p = [0.3; -1; 0.9; 40; -0.7; 0.8; 3e3; 0.2; 0.5; 1.5];
+%!     fc = __lafortune_core__ (p, sxy, sz);
+%!     fo = __octave_engine (@() lafortune_core (p, sxy, sz));
+%!     assert (__same_bits (fc, fo), sprintf ("%d rows: the engines differ", n));
+%!   endfor
+%! unwind_protect_cleanup
+%!   cd (here);
+%!   rand ("state", state);
+%! end_unwind_protect
+
+%!test
 %! ## values and Jacobians directly, bit for bit (NaN payloads and signed
 %! ## zeros too): the oct-file against lafortune_core's Octave arithmetic
 %! ## (the private function, called from its folder), on random and
