@@ -42,6 +42,16 @@ SPP_QUICK ?= 8
 # `make reproduce`: samples per pixel of the error-against-run-time study
 SPP_STUDY ?= 1 2 4 8 16 32 64
 SPP_STUDY_QUICK ?= 1 2 4
+# `make reproduce`: error against run time under an environment light (the
+# spp step, figures/env-samples.png): the measured data on the scene lit by
+# the light probe ENV_MAP (a name of scene_make's "map": courtyard, ..., or
+# sky, the built-in sky), one ray per pixel centre, ENV_SAMPLES light
+# samples per pixel against ENV_REFERENCE of them (the converged render)
+ENV_MAP ?= courtyard
+ENV_SAMPLES ?= 1 4 16 64 256
+ENV_SAMPLES_QUICK ?= 1 4 16
+ENV_REFERENCE ?= 1024
+ENV_REFERENCE_QUICK ?= 256
 # `make reproduce`: the study of which fit looks right (scripts/repro_study.m):
 # every table of STUDY_TABLES fitted with every weighting of STUDY_WEIGHTS (and
 # the scene table with image weights), each fit rendered in the scene and in a

@@ -22,6 +22,9 @@
 ## @item study-MATERIAL.png, study-flip-MATERIAL.png: the study (STUDY): PSNR
 ## and FLIP against lobes, one panel per table, one line per weighting
 ## (plot_lobes);
+## @item env-samples.png: FLIP of the measured render under the light probe
+## ENV_MAP against run time, numbers the light samples per pixel (drawn
+## here);
 ## @item spp.png: render PSNR against run time, one panel per material (drawn
 ## here: a small plot).
 ## @end itemize
@@ -86,7 +89,9 @@ function repro_figures ()
   done (plot_trace (fits, "names", c.materials,
                     "title", sprintf ("In-plane fits, 1 to %d lobes: error against run time", max (c.lobes)),
                     "file", repro_files ("fig_trace", c.results, "")));
-  ## render PSNR against run time
+  ## render error against run time: light samples of an environment, and
+  ## samples per pixel (the last figure: the target)
+  env_figure (c, repro_files ("fig_env", c.results, ""));
   spp_figure (c, repro_files ("figures", c.results, ""));
   if (c.study)
     for i = 1:numel (c.materials)
@@ -135,6 +140,35 @@ endfunction
 
 function done (hf)
   close (hf);
+endfunction
+
+## FLIP against run time of the measured data under the environment light,
+## one panel per material, numbers: light samples per pixel
+function env_figure (c, file)
+  warning ("off", "Octave:gnuplot-graphics");
+  vis = "on";
+  if (isempty (getenv ("DISPLAY")))
+    vis = "off";
+  endif
+  n = numel (c.materials);
+  W = 80 + n * 400 + (n - 1) * 60 + 20;
+  h = figure ("visible", vis, "position", [40 40 W 420], "color", "w");
+  for i = 1:n
+    mat = c.materials{i};
+    P = jsondecode (fileread (repro_files ("spp", c.results, mat))).env;
+    ax = axes ("parent", h, "position", [(80 + (i - 1) * 460) / W, 60 / 420, 400 / W, 310 / 420]);
+    loglog (ax, P.time, P.flip, "-o", "linewidth", 1.5);
+    for j = 1:numel (P.samples)
+      text (ax, P.time(j) * 1.06, P.flip(j) * 1.04, sprintf ("%d", P.samples(j)), "fontsize", 9);
+    endfor
+    xlabel (ax, "render time (s); numbers: light samples per pixel");
+    if (i == 1)
+      ylabel (ax, sprintf ("FLIP against %d light samples", P.reference));
+    endif
+    title (ax, sprintf ("%s: measured data under %s", mat, P.map),
+           "interpreter", "none");
+  endfor
+  repro_print (h, file, 90, "repro_figures");
 endfunction
 
 function spp_figure (c, file)

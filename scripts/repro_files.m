@@ -57,6 +57,7 @@ function out = repro_files (kind, root, material, method, k)
       "fig_slice", "figures/slice-%.png",
       "fig_renders", "figures/renders-%.png",
       "fig_trace", "figures/fit-trace.png",
+      "fig_env", "figures/env-samples.png",
       "fig_study", "figures/study-%.png",
       "fig_study_flip", "figures/study-flip-%.png",
       ## the reports

@@ -108,6 +108,9 @@ function repro_report ()
     s.spp = P.spp(:)';
     s.spp_time = P.time(:)';
     s.spp_psnr = P.psnr(:)';
+    s.env_samples = P.env.samples(:)';
+    s.env_time = P.env.time(:)';
+    s.env_flip = P.env.flip(:)';
     sm.materials.(fieldname (mat)) = s;
     D.(fieldname (mat)) = struct ("F", F, "R", R, "P", P, "M", M);
   endfor
@@ -218,6 +221,23 @@ function repro_report ()
   endfor
   L{end+1} = "";
   L{end+1} = "![render PSNR against run time](figures/spp.png)";
+  L{end+1} = "";
+  E1 = D.(fieldname (c.materials{1})).P.env;
+  L{end+1} = sprintf ("Under the environment light '%s' (one ray per pixel centre), with fewer light samples per pixel, against the %d-sample render (FLIP: 0 = the same, lower is better).",
+                      E1.map, E1.reference);
+  L{end+1} = "";
+  L{end+1} = "| material | light samples | render time (s) | FLIP | PSNR (dB) |";
+  L{end+1} = "|---|---|---|---|---|";
+  for i = 1:numel (c.materials)
+    mat = c.materials{i};
+    E = D.(fieldname (mat)).P.env;
+    for j = 1:numel (E.samples)
+      L{end+1} = sprintf ("| %s | %d | %.2f | %.3f | %.2f |", mat, E.samples(j), E.time(j), E.flip(j), E.psnr(j));
+    endfor
+    L{end+1} = sprintf ("| %s | %d (reference) | %.2f | - | - |", mat, E.reference, E.reference_time);
+  endfor
+  L{end+1} = "";
+  L{end+1} = "![render FLIP against run time, environment light](figures/env-samples.png)";
   L{end+1} = "";
   L{end+1} = "### Render times";
   L{end+1} = "";

@@ -6,8 +6,13 @@
 ## Step of `make reproduce` (run by repro_step, which writes @var{R} to
 ## RESULTS/spp/MATERIAL.json), error against run time for rendering: the
 ## measured data rendered with fewer samples per pixel (SPP_STUDY), render
-## time and PSNR against the full render.  @var{R}: @code{reference_spp},
-## @code{reference_time}, @code{spp}, @code{time}, @code{psnr} (vectors).
+## time and PSNR against the full render; and under the environment light
+## ENV_MAP, one ray per pixel centre, with ENV_SAMPLES light samples per
+## pixel against ENV_REFERENCE of them: time, FLIP and PSNR.  @var{R}:
+## @code{reference_spp}, @code{reference_time}, @code{spp}, @code{time},
+## @code{psnr} (vectors), and @code{env} (@code{map}, @code{reference},
+## @code{reference_time}, @code{samples}, @code{time}, @code{flip},
+## @code{psnr}).
 ## @end deftypefn
 function R = repro_spp (material)
   c = repro_config ();
@@ -26,6 +31,33 @@ function R = repro_spp (material)
     R.psnr(i) = img_psnr (ref, img);
     printf ("reproduce: [%s] %3d spp: %.2f s, PSNR %.2f dB against %d spp\n", material,
             c.spp_study(i), R.time(i), R.psnr(i), R.reference_spp);
+    fflush (stdout);
+  endfor
+  R.env = env_study (c, b, material);
+endfunction
+
+## the light samples of an environment light: FLIP and PSNR against a
+## converged render, each with other samples (seeds) than the reference's
+function E = env_study (c, b, material)
+  s = repro_scene (c);
+  e = scene_make ("sphere", "light", "environment", "map", c.env_map, "size", [1 1]);
+  s.light = e.light;
+  s.spp = 1;
+  s.jitter = false;
+  [ref, info] = rt_render (s, b, "progress", false, "light_samples", c.env_reference);
+  n = numel (c.env_samples);
+  E = struct ("map", s.light.name, "reference", c.env_reference,
+              "reference_time", info.time_total, "samples", c.env_samples,
+              "time", zeros (1, n), "flip", zeros (1, n), "psnr", zeros (1, n));
+  for i = 1:n
+    s.seed = 1000 + i;
+    [img, info] = rt_render (s, b, "progress", false, "light_samples", c.env_samples(i));
+    q = img_compare (ref, img);
+    E.time(i) = info.time_total;
+    E.flip(i) = q.flip;
+    E.psnr(i) = q.psnr;
+    printf ("reproduce: [%s] %s, %4d light samples: %.2f s, FLIP %.3f, PSNR %.2f dB against %d\n",
+            material, E.map, c.env_samples(i), E.time(i), E.flip(i), E.psnr(i), E.reference);
     fflush (stdout);
   endfor
 endfunction
