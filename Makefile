@@ -20,7 +20,7 @@ export MERL_PROXY_DIR
 # real MERL .binary files, when a user has them (make reproduce)
 MERL_DIR ?= data/merl
 QUICK ?= 0
-DEB_PACKAGES := octave octave-optim liboctave-dev libopenexr-dev pkg-config povray gnuplot-nox fonts-dejavu-core fonts-freefont-otf parallel
+DEB_PACKAGES := octave octave-optim liboctave-dev libopenexr-dev pkg-config povray gnuplot-nox fonts-dejavu-core fonts-freefont-otf parallel blender-data
 # test dependencies (make deps CLUSTER=1): the real ssh server and Slurm cluster of make check
 CLUSTER_PACKAGES := slurm-wlm munge openssh-server openssh-client
 

@@ -168,7 +168,9 @@
 ## to the image (@code{pov_render} renders and adds them).  The background
 ## is in frame 1 only.  An environment light (@qcode{"light"},
 ## @qcode{"environment"}) is first cut into @qcode{"lights"} directional
-## lights by @code{scene_lights}.
+## lights by @code{scene_lights}.  Each light's tables default to
+## @qcode{"entries"} 64 and @qcode{"dense"} 129 (a light carries a K-th of
+## the light, and the tables' cost grows with K); give them to change it.
 ##
 ## A point light (the angle to the light changes over the surfaces as well,
 ## a fourth table dimension) gives the error @code{lafortune:povUnsupported};
@@ -212,6 +214,14 @@ function info = pov_write_scene (scene, material, file, varargin)
     light = scene.light;
   endif
   if (strcmp (light.type, "lights"))
+    ## each light carries a K-th of the light: smaller tables by default
+    given = @(nm) any (strcmpi (varargin(1:2:end), nm));
+    if (! given ("entries"))
+      opt.entries = 64;
+    endif
+    if (! given ("dense"))
+      opt.dense = 129;
+    endif
     info = write_lights (scene, material, file, opt, cam, kind, t0);
     return;
   endif

@@ -83,7 +83,8 @@
 ## @code{"interior"}, @code{"night"}, @code{"studio"}, @code{"sunrise"},
 ## @code{"sunset"} (the CC0 HDRIs of Debian's package @code{blender-data},
 ## which @code{make deps} installs; without it the built-in sky is used, with
-## the warning @code{lafortune:noLightProbe}), @code{"sky"} (the built-in
+## the warning @code{lafortune:noLightProbe}; the environment variable
+## @env{LAFORTUNE_PROBES} names another folder of such files), @code{"sky"} (the built-in
 ## analytic sky: sky, ground and a sun disk) or an H x 2H x 3 array of
 ## radiance.  Slightly negative texels (compression ringing, above -0.05
 ## times the mean luminance) are set to 0; a missing or unreadable file,
@@ -501,6 +502,35 @@ endfunction
 %!   t = scene_make ("sphere", "light", "environment", "map", f);
 %!   assert (isequal (t.light.map, s.light.map));
 %! endif
+
+%!test
+%! ## without blender-data's light probes: the built-in sky, and the toolbox
+%! ## says so (a folder without them stands for the missing package)
+%! d = tempname (); mkdir (d);
+%! old = getenv ("LAFORTUNE_PROBES");
+%! unwind_protect
+%!   setenv ("LAFORTUNE_PROBES", d);
+%!   warning ("error", "lafortune:noLightProbe", "local");
+%!   try
+%!     scene_make ("sphere", "light", "environment", "map", "city");
+%!     error ("no warning");
+%!   catch err
+%!     assert (err.identifier, "lafortune:noLightProbe");
+%!     assert (! isempty (strfind (err.message, "blender-data")));
+%!   end_try_catch
+%!   warning ("off", "lafortune:noLightProbe", "local");
+%!   s = scene_make ("sphere", "light", "environment", "map", "city");
+%!   assert (s.light.name, "sky");
+%!   assert (isequal (s.light.map, scene_make ("sphere", "light", "environment", "map", "sky").light.map));
+%!   ## the folder's own files are found by name
+%!   exrwrite (fullfile (d, "city.exr"), ones (4, 8, 3));
+%!   s = scene_make ("sphere", "light", "environment", "map", "city");
+%!   assert ([s.light.name, size(s.light.map)], ["city", 4 8 3]);
+%! unwind_protect_cleanup
+%!   setenv ("LAFORTUNE_PROBES", old);
+%!   confirm_recursive_rmdir (false, "local");
+%!   rmdir (d, "s");
+%! end_unwind_protect
 
 %!test
 %! ## a map that is not an OpenEXR file, and one in a file that is corrupt

@@ -212,3 +212,28 @@
 %!     rmdir (d, "s");
 %!   end_unwind_protect
 %! endif
+
+%!test
+%! ## every scene renders under an environment: the torus (a mesh with
+%! ## vertex normals, self-shadowing) and a perspective camera; the lit
+%! ## pixels are finite and positive, the misses the background
+%! m = models (){1};
+%! for n = {"torus", "mesh", "spheres"}
+%!   s = scene_make (n{1}, "size", [24 32], "spp", 1, "resolution", [16 8], "light", "environment",
+%!                   "map", "sky", "light_samples", 16, "camera", "perspective",
+%!                   "background", [0.1 0.2 0.3]);
+%!   [img, info] = rt_render (s, m, "progress", false);
+%!   assert (info.mode, "lights");
+%!   assert (all (isfinite (img(:))) && all (img(:) >= 0));
+%!   bg = all (abs (img - reshape ([0.1 0.2 0.3], 1, 1, 3)) < 1e-12, 3);
+%!   assert (any (! bg(:)));
+%!   assert (any (bg(:)) || strcmp (n{1}, "spheres"));      # the ground fills that view
+%! endfor
+%! ## the torus shadows itself: a Lambertian torus under a constant sky is
+%! ## darker on its inner rim than the unoccluded rho L
+%! s = scene_make ("torus", "size", [48 48], "spp", 1, "jitter", false, "resolution", [32 16],
+%!                 "light", "environment", "map", ones (8, 16, 3), "light_samples", 256);
+%! lam = struct ("rho_d", [1 1 1], "Cxy", zeros (0, 3), "Cz", zeros (0, 3), "e", zeros (0, 3));
+%! g = rt_render (s, lam, "progress", false)(:,:,2);
+%! assert (max (g(:)) < 1.06 && max (g(:)) > 0.9);
+%! assert (min (g(g > 0)) < 0.8);
