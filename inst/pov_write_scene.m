@@ -169,7 +169,7 @@
 ## is in frame 1 only.  An environment light (@qcode{"light"},
 ## @qcode{"environment"}) is first cut into @qcode{"lights"} directional
 ## lights by @code{scene_lights}.  Each light's tables default to
-## @qcode{"entries"} 64 and @qcode{"dense"} 129 (a light carries a K-th of
+## @qcode{"entries"} 128 and @qcode{"dense"} 257 (a light carries a K-th of
 ## the light, and the tables' cost grows with K); give them to change it.
 ##
 ## A point light (the angle to the light changes over the surfaces as well,
@@ -217,10 +217,10 @@ function info = pov_write_scene (scene, material, file, varargin)
     ## each light carries a K-th of the light: smaller tables by default
     given = @(nm) any (strcmpi (varargin(1:2:end), nm));
     if (! given ("entries"))
-      opt.entries = 64;
+      opt.entries = 128;
     endif
     if (! given ("dense"))
-      opt.dense = 129;
+      opt.dense = 257;
     endif
     info = write_lights (scene, material, file, opt, cam, kind, t0);
     return;

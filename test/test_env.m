@@ -164,7 +164,7 @@
 %!     s = scene_lights (s, 6);
 %!     for i = 1:numel (mm) - 1
 %!       ref = rt_render (s, mm{i}, "progress", false);
-%!       [img, info] = pov_render (s, mm{i}, "entries", 64);
+%!       [img, info] = pov_render (s, mm{i});
 %!       q = img_compare (ref, img);
 %!       assert (info.frames, 6);
 %!       assert (q.psnr >= 50 && q.flip <= 0.02, "%s, model %d: %.1f dB, FLIP %.4f", n{1}, i,
