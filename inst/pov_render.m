@@ -135,7 +135,7 @@ function [img, info] = pov_render (scene, material, varargin)
       K = winfo.frames;
       args = [args, sprintf(" +KFI1 +KFF%d", K)];
     endif
-    ## POV-Ray idles about 0.25 s between frames (its front end polls), so
+    ## POV-Ray idles between frames (its front end polls), so
     ## the frames of many lights go to several processes at once, each
     ## with one render thread unless "threads" says otherwise
     np = 1;
