@@ -104,6 +104,11 @@ function [S, img] = merl_scene (material, scene, varargin)
     print_usage ();
   endif
   scene_check (scene, "merl_scene");
+  if (any (strcmp (scene.light.type, {"environment", "lights"})))
+    error ("lafortune:badScene",
+           "merl_scene: the table of a scene needs one directional or point light, got %s light (render it with rt_render; scene_lights gives its directional lights one by one)",
+           scene.light.type);
+  endif
   if (isempty (material_kind (material)))
     error ("lafortune:badMaterial",
            "merl_scene: MATERIAL must be a MERL material or an analytic model (brdf_model), got %s",
@@ -318,6 +323,7 @@ endfunction
 %! assert (all (S.weight(known) > 0));
 %! assert (all (S.rgb(! known,:)(:) == 0));
 
+%!error id=lafortune:badScene merl_scene (merl_standin ("red-plastic"), scene_make ("sphere", "size", 4, "light", "environment", "map", "sky"))
 %!error <Invalid call> merl_scene (1)
 %!error id=lafortune:badScene merl_scene (struct ("rho_d", [1 1 1], "Cxy", [], "Cz", [], "e", []), 1)
 %!error id=lafortune:badMaterial merl_scene (42, scene_make ("sphere", "size", 4))
