@@ -62,7 +62,20 @@
 ## evaluate @code{material_eval} per hit, in the local frame.
 ## @item "auto"
 ## (default) "slice" when possible, else "direct" (perspective camera or point
-## light).
+## light); "lights" under an environment light or a list of lights.
+## @item "lights"
+## the only mode (for any camera) for @code{scene.light.type}
+## @qcode{"environment"} or @qcode{"lights"} (@code{scene_make};
+## @qcode{"direct"} gives it too).  Each pixel sample that hits a surface
+## takes @qcode{"light_samples"} directions (default
+## @code{scene.light.samples}) drawn from the map in proportion to its
+## luminance times sin theta (a piecewise-constant 2-D distribution over the
+## texels, marginal over the rows and conditional within each, as pbrt's
+## image infinite light), stratified (the first points of the R2 sequence,
+## shifted by a hash of the sample and @code{scene.seed}); or, for a list of
+## lights, every light.  Each gets a shadow ray into the scene's own
+## geometry and adds f (wi, wo) cos (theta_i) times the map's radiance over
+## the density, divided by the count (or times the light's irradiance).
 ## @end table
 ##
 ## Samples: the @code{scene.spp} primary rays of a pixel are stratified,
@@ -77,7 +90,8 @@
 ## converge much faster than independent ones where a pixel covers many
 ## small facets (a 100k-triangle mesh at 256 x 512).
 ##
-## Other options: @code{"jitter"} (default @code{scene.jitter}, else true:
+## Other options: @code{"light_samples"} (lights mode, see above),
+## @code{"jitter"} (default @code{scene.jitter}, else true:
 ## overrides it), @code{"progress"} (default true: on renders longer than
 ## 2 s a line "rt_render: 42% done, 12 s left" is updated in place on a
 ## terminal; when stdout is not a terminal, a line is printed every 10% or
@@ -87,7 +101,13 @@
 ## generator's state is restored afterwards), so the same scene gives the same
 ## image.
 ##
-## Trace once, shade many: in slice mode the trace does not depend on the
+## Trace once, shade many (slice and lights modes): in lights mode the
+## cache keeps, for every light sample that reaches a surface, the three
+## numbers an isotropic material depends on, [cos theta_i, cos theta_o,
+## wi . wo], and its weight (about 40 bytes each), so that another material
+## from the cache is only evaluated there, on the same light samples: the
+## measured data and its fits then share their noise.  In slice mode the
+## trace does not depend on the
 ## material, so the third output @var{cache} keeps what the shading needs of
 ## every primary sample (the lit hits' table weights and cos (theta_i), the
 ## misses; about 25 bytes per lit sample and 1 per sample), and
@@ -107,7 +127,9 @@
 ## shading used: the slice table, or the whole material struct in direct
 ## mode), @code{slice_size}, @code{spp}, @code{cached} (true when the
 ## render used @var{cache}; @code{rays} then counts the rays the cached
-## trace took).
+## trace took), @code{light_samples} (lights mode: per pixel sample, or the
+## number of lights), @code{evaluations} (lights mode: the material's
+## evaluations) and @code{time_brdf} (their time).
 ##
 ## @example
 ## @group
@@ -121,6 +143,10 @@
 ## [img, ~, cache] = rt_render (scene, brdf);
 ## fit = lafortune_fit (merl_samples (brdf), 2);
 ## img3 = rt_render (scene, fit, "cache", cache);   # no ray traced
+## ## under an environment map, the same light samples for both
+## env = scene_make ("sphere", "size", [128 128], "light", "environment", "map", "sky");
+## [ref, ~, c] = rt_render (env, brdf, "light_samples", 64);
+## img4 = rt_render (env, fit, "cache", c, "light_samples", 64);
 ## @end group
 ## @end example
 ## @seealso{scene_make, scene_slice, material_eval, rt_intersect, rt_bvh, img_psnr}

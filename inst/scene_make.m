@@ -141,9 +141,11 @@
 ## scene = scene_make ("mesh", "file", "happy_vrip.ply", "size", "paper", "spp", 128);
 ## scene.mesh_info.degenerate               # triangles dropped
 ## scene = scene_make ("mesh", "file", "part.obj", "up", "z", "camera", "perspective");
+## scene = scene_make ("spheres", "light", "environment", "map", "forest", ...
+##                     "rotation", 120, "light_samples", 128);
 ## @end group
 ## @end example
-## @seealso{rt_render, mesh_read, mesh_torus, scene_slice}
+## @seealso{rt_render, scene_lights, mesh_read, mesh_torus, scene_slice}
 ## @end deftypefn
 
 function scene = scene_make (name, varargin)
