@@ -91,8 +91,8 @@ function repro_figures ()
                     "file", repro_files ("fig_trace", c.results, "")));
   ## render error against run time: light samples of an environment, and
   ## samples per pixel (the last figure: the target)
-  env_figure (c, repro_files ("fig_env", c.results, ""));
-  spp_figure (c, repro_files ("figures", c.results, ""));
+  cost_figure (c, repro_files ("fig_env", c.results, ""), @(ax, m, f) env_panel (c, ax, m, f));
+  cost_figure (c, repro_files ("figures", c.results, ""), @(ax, m, f) spp_panel (c, ax, m, f));
   if (c.study)
     for i = 1:numel (c.materials)
       study_figure (c, c.materials{i}, repro_files ("fig_study", c.results, c.materials{i}), "psnr_a");
@@ -142,9 +142,9 @@ function done (hf)
   close (hf);
 endfunction
 
-## FLIP against run time of the measured data under the environment light,
-## one panel per material, numbers: light samples per pixel
-function env_figure (c, file)
+## error against run time, one panel per material (drawn here: a small
+## plot), each panel drawn by DRAW (ax, material, first)
+function cost_figure (c, file, draw)
   warning ("off", "Octave:gnuplot-graphics");
   vis = "on";
   if (isempty (getenv ("DISPLAY")))
@@ -154,45 +154,37 @@ function env_figure (c, file)
   W = 80 + n * 400 + (n - 1) * 60 + 20;
   h = figure ("visible", vis, "position", [40 40 W 420], "color", "w");
   for i = 1:n
-    mat = c.materials{i};
-    P = jsondecode (fileread (repro_files ("spp", c.results, mat))).env;
     ax = axes ("parent", h, "position", [(80 + (i - 1) * 460) / W, 60 / 420, 400 / W, 310 / 420]);
-    loglog (ax, P.time, P.flip, "-o", "linewidth", 1.5);
-    for j = 1:numel (P.samples)
-      text (ax, P.time(j) * 1.06, P.flip(j) * 1.04, sprintf ("%d", P.samples(j)), "fontsize", 9);
-    endfor
-    xlabel (ax, "render time (s); numbers: light samples per pixel");
-    if (i == 1)
-      ylabel (ax, sprintf ("FLIP against %d light samples", P.reference));
-    endif
-    title (ax, sprintf ("%s: measured data under %s", mat, P.map),
-           "interpreter", "none");
+    draw (ax, c.materials{i}, i == 1);
   endfor
   repro_print (h, file, 90, "repro_figures");
 endfunction
 
-function spp_figure (c, file)
-  warning ("off", "Octave:gnuplot-graphics");
-  vis = "on";
-  if (isempty (getenv ("DISPLAY")))
-    vis = "off";
-  endif
-  n = numel (c.materials);
-  W = 80 + n * 400 + (n - 1) * 60 + 20;
-  h = figure ("visible", vis, "position", [40 40 W 420], "color", "w");
-  for i = 1:n
-    mat = c.materials{i};
-    P = jsondecode (fileread (repro_files ("spp", c.results, mat)));
-    ax = axes ("parent", h, "position", [(80 + (i - 1) * 460) / W, 60 / 420, 400 / W, 310 / 420]);
-    semilogx (ax, P.time, P.psnr, "-o", "linewidth", 1.5);
-    for j = 1:numel (P.spp)
-      text (ax, P.time(j) * 1.06, P.psnr(j), sprintf ("%d", P.spp(j)), "fontsize", 9);
-    endfor
-    xlabel (ax, "render time (s); numbers: samples per pixel");
-    if (i == 1)
-      ylabel (ax, sprintf ("PSNR against %d spp (dB)", c.spp));
-    endif
-    title (ax, sprintf ("%s: measured data, rt_render", mat), "interpreter", "none");
+## FLIP against run time of the measured data under the environment light,
+## numbers: light samples per pixel
+function env_panel (c, ax, mat, first)
+  P = jsondecode (fileread (repro_files ("spp", c.results, mat))).env;
+  loglog (ax, P.time, P.flip, "-o", "linewidth", 1.5);
+  for j = 1:numel (P.samples)
+    text (ax, P.time(j) * 1.06, P.flip(j) * 1.04, sprintf ("%d", P.samples(j)), "fontsize", 9);
   endfor
-  repro_print (h, file, 90, "repro_figures");
+  xlabel (ax, "render time (s); numbers: light samples per pixel");
+  if (first)
+    ylabel (ax, sprintf ("FLIP against %d light samples", P.reference));
+  endif
+  title (ax, sprintf ("%s: measured data under %s", mat, P.map), "interpreter", "none");
+endfunction
+
+## render PSNR against run time, numbers: samples per pixel
+function spp_panel (c, ax, mat, first)
+  P = jsondecode (fileread (repro_files ("spp", c.results, mat)));
+  semilogx (ax, P.time, P.psnr, "-o", "linewidth", 1.5);
+  for j = 1:numel (P.spp)
+    text (ax, P.time(j) * 1.06, P.psnr(j), sprintf ("%d", P.spp(j)), "fontsize", 9);
+  endfor
+  xlabel (ax, "render time (s); numbers: samples per pixel");
+  if (first)
+    ylabel (ax, sprintf ("PSNR against %d spp (dB)", c.spp));
+  endif
+  title (ax, sprintf ("%s: measured data, rt_render", mat), "interpreter", "none");
 endfunction
