@@ -180,6 +180,11 @@ DB_DATA := $(abspath $(MERL_DIR))
 HOSTS ?=
 PARALLEL ?= parallel
 PARALLEL_OPTS ?=
+# the environment that decides BLAS's arithmetic (OpenBLAS's kernels), which
+# ssh does not carry: passed to the ssh hosts' jobs where it is set, so that
+# a material's fits do not depend on which host made them (without it, a
+# host whose shell lacks OPENBLAS_CORETYPE fits to other last bits)
+PARALLEL_ENV ?= OPENBLAS_CORETYPE OPENBLAS_L2_SIZE OPENBLAS_NUM_THREADS OMP_NUM_THREADS
 # a material's folder; one step of a material: $(1) step, $(2) material
 dbdir = $(call file_of,db_material,$(1),$(DB))
 dbstep = RESULTS=$(call dbdir,$(2)) DATA_DIR=$(DB_DATA) DATABASE=1 $(call octstep,$(1),$(2))
@@ -211,7 +216,8 @@ database: deps
 	@$(MAKE) --no-print-directory -C src
 ifneq ($(HOSTS),)
 	@$(MAKE) --no-print-directory -s $(DB)/$(FILE_settings)
-	$(PARALLEL) -q --sshloginfile $(HOSTS) --workdir $(CURDIR) --halt never $(PARALLEL_OPTS) \
+	$(PARALLEL) -q --sshloginfile $(HOSTS) --workdir $(CURDIR) --halt never \
+	  $(foreach v,$(PARALLEL_ENV),$(if $(value $(v)),--env $(v))) $(PARALLEL_OPTS) \
 	  make --no-print-directory -s db-{} $(MAKEOVERRIDES) MERL_DIR=$(DB_DATA) DB=$(abspath $(DB)) \
 	  ::: $(DB_MATS) || true
 endif

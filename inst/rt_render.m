@@ -279,13 +279,15 @@ function [img, info, cache] = rt_render (scene, material, varargin)
   if (opt.progress)
     prog = progress_line ("rt_render");
   endif
-  ## from the cache in lights mode, the material is evaluated on many
-  ## chunks' samples at once (the compiled core shares big calls out over
-  ## the cores); the values are the same, the sums per chunk as before
-  Fc = {};
+  ## from the cache in lights mode, the material is evaluated on all the
+  ## chunks' samples at once (the cache keeps their X in one array; the
+  ## compiled core shares big calls out over the cores): the values are the
+  ## same, the sums per chunk as before
+  Fc = [];
   if (cached && strcmp (mode, "lights"))
     t1 = tic ();
-    Fc = batch_eval (material, opt.cache.chunks, 2 ^ 20);
+    Fc = batch_eval (material, opt.cache.X, 2 ^ 22);
+    off = [0, cumsum(opt.cache.rows)];
     t_brdf += toc (t1);
     t_shade += toc (t1);
   endif
@@ -333,15 +335,14 @@ function [img, info, cache] = rt_render (scene, material, varargin)
         miss = Tc.miss;
       elseif (strcmp (mode, "lights"))
         if (cached)
-          rad = Fc{ic};
-          Fc{ic} = [];
+          rad = Fc(off(ic)+1:off(ic+1),:);
         else
           t1 = tic ();
           rad = material_x (material, Tc.X);
           t_brdf += toc (t1);
         endif
         rad .*= double (Tc.w);
-        nevals += rows (Tc.X);
+        nevals += rows (rad);
         lith = Tc.h;
         miss = Tc.miss;
       else
@@ -379,6 +380,11 @@ function [img, info, cache] = rt_render (scene, material, varargin)
   cache = [];
   if (keep)
     cache = struct ("key", key, "chunks", {chunks}, "nshadow", nshadow);
+    if (strcmp (mode, "lights"))         # every light sample's X in one array
+      cache.rows = cellfun (@(c) rows (c.X), chunks);
+      cache.X = vertcat (cellfun (@(c) c.X, chunks, "UniformOutput", false){:});
+      cache.chunks = cellfun (@(c) rmfield (c, "X"), chunks, "UniformOutput", false);
+    endif
   elseif (cached)
     cache = opt.cache;
   endif
@@ -398,22 +404,18 @@ function [img, info, cache] = rt_render (scene, material, varargin)
   endif
 endfunction
 
-## material_x on the X of the chunks, about N rows at a time, split back
-## into one cell per chunk
-function F = batch_eval (material, chunks, N)
-  nc = numel (chunks);
-  F = cell (1, nc);
-  r = cellfun (@(c) rows (c.X), chunks);
-  i = 1;
-  while (i <= nc)
-    j = i;
-    while (j < nc && sum (r(i:j+1)) <= N)
-      j += 1;
-    endwhile
-    f = material_x (material, vertcat (cellfun (@(c) c.X, chunks(i:j), "UniformOutput", false){:}));
-    F(i:j) = mat2cell (f, r(i:j), 3);
-    i = j + 1;
-  endwhile
+## material_x on the rows of X, N at a time (bounds the temporaries)
+function F = batch_eval (material, X, N)
+  n = rows (X);
+  if (n <= N)
+    F = material_x (material, X);
+    return;
+  endif
+  F = zeros (n, 3);
+  for i = 1:N:n
+    j = min (i + N - 1, n);
+    F(i:j,:) = material_x (material, X(i:j,:));
+  endfor
 endfunction
 
 ## The slice table: radiance at the normals N(theta_h, psi) about the half
