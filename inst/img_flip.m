@@ -208,7 +208,7 @@ endfunction
 ## reference's object pixels.
 function [e0, e1, n] = exposures (ref, e0, e1, n, fname)
   if (isempty (e0) || isempty (e1))
-    Y = 0.2126 * ref(:,:,1) + 0.7152 * ref(:,:,2) + 0.0722 * ref(:,:,3);
+    Y = luminance (ref);
     Y = sort (Y(Y > 0));
     if (isempty (Y))
       error ("lafortune:badImage",

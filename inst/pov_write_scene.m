@@ -266,7 +266,7 @@ function T = light_tables (scene, material, opt, cam, kind, L, G)
   ## (ti, to), where to grows as theta_h squared), else to
   C = pov_tables ("inner_coord", persp, L, V);
   if (opt.crop || opt.cull || persp)     # the gamma levels need the points too
-    [S, S.G] = pov_cast (scene, cam, L, G);
+    [S, G] = pov_cast (scene, cam, L, G);
     S.u = pov_tables ("inner_of", S.ti, S.to, C);
   endif
   if (opt.crop)
@@ -387,10 +387,7 @@ function T = light_tables (scene, material, opt, cam, kind, L, G)
 
   T = struct ("body", {body}, "tabs", tabs, "kept", kept, "keep", keep, "faces", {faces},
               "rng_i", rng_i, "rng_o", rng_o, "peak", peak, "level", level, "gl", gl,
-              "ndense", ndense, "C", C, "G", []);
-  if (exist ("S", "var") && isfield (S, "G"))
-    T.G = S.G;
-  endif
+              "ndense", ndense, "C", C, "G", G);
 endfunction
 
 ## The knots and the SDL of one term's table at one gamma level: outer map
@@ -472,19 +469,8 @@ function info = write_lights (scene, material, file, opt, cam, kind, t0)
     faces = cell (1, nob);
   endif
   [osdl, nfd] = pov_sdl ("objects", scene.objects, keep, faces);
-  bg = double (scene.background(:)') .* [1 1 1];
-  hdr = sprintf (["// POV-Ray 3.7 scene written by pov_write_scene (lafortune package)\n" ...
-                  "// scene '%s', material '%s', %d x %d pixels, %d directional lights, one per frame:\n" ...
-                  "// frame k includes %s_Lkkkk.inc (light k and its tables); the image is the sum of the frames\n" ...
-                  "// render: povray +I<this> +O<out>.exr +FE +W%d +H%d -A File_Gamma=1.0 +KFI1 +KFF%d\n" ...
-                  "#version 3.7;\nglobal_settings { assumed_gamma 1.0 ambient_light rgb 0 }\n" ...
-                  "#if (frame_number < 1 | frame_number > %d)\n" ...
-                  "#error \"render this scene as an animation, +KFI1 +KFF%d: frame k is light k\"\n#end\n" ...
-                  "#if (frame_number = 1) background { rgb %s } #else background { rgb 0 } #end\n" ...
-                  "#include concat (\"%s_L\", str (frame_number, -4, 0), \".inc\")\n"],
-                 name_of (scene), name_of (material), scene.width, scene.height, K, base,
-                 scene.width, scene.height, K, K, K, pov_sdl ("vec", bg), base);
-  atomic_write (file, fname, @(fid) write_text (fid, {hdr, pov_sdl("camera", cam, scene), osdl}));
+  parts = {pov_sdl("frames", scene, material, K, base), pov_sdl("camera", cam, scene), osdl};
+  atomic_write (file, fname, @(fid) write_text (fid, parts));
   d = dir (file);
   info = struct ("file", file, "bytes", bytes + d.bytes, "terms", [], "entries", entries,
                  "gamma", [], "ti_range", [], "to_range", [], "peak", peak, "level", [],

@@ -12,14 +12,14 @@
 ## @code{rad} (H*W x 3, the map times the light's intensity, column-major),
 ## @code{p} (H x W texel probabilities), @code{cdf_row} (H+1),
 ## @code{cdf_col} (the rows' conditional CDFs, W+1 each, offset by the
-## row's index so that one @code{lookup} serves every row), @code{R} (the
-## rotation about +y, map frame to world).
+## row's index so that one @code{lookup} serves every row), @code{rotation}
+## (the map's turn about +y, degrees: @code{env_dirs}).
 ## @end deftypefn
 function D = env_dist (light)
   M = light.map;
   [H, W, ~] = size (M);
   E = double (light.irradiance(:).') .* [1 1 1];
-  Y = 0.2126 * M(:,:,1) + 0.7152 * M(:,:,2) + 0.0722 * M(:,:,3);
+  Y = luminance (M);
   th = ((1:H).' - 0.5) / H * pi;
   w = Y .* sin (th);
   Z = sum (w(:));
@@ -33,8 +33,7 @@ function D = env_dist (light)
   C(s <= 0,:) = repmat ((0:W) / W, nnz (s <= 0), 1);    # never drawn
   C(:,end) = 1;
   C += (0:H-1).';
-  a = light.rotation * pi / 180;
-  R = [cos(a) 0 sin(a); 0 1 0; -sin(a) 0 cos(a)];
   D = struct ("H", H, "W", W, "rad", reshape (M, H * W, 3) .* E, "p", p,
-              "cdf_row", cdf_row, "cdf_col", reshape (C.', [], 1), "R", R);
+              "cdf_row", cdf_row, "cdf_col", reshape (C.', [], 1),
+              "rotation", light.rotation);
 endfunction

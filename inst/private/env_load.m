@@ -80,7 +80,7 @@ function env = env_load (map, fname)
     error ("lafortune:badMap", "%s: the map '%s' has %d non-finite texels", fname, name,
            nnz (! isfinite (M(:))));
   endif
-  Y = 0.2126 * M(:,:,1) + 0.7152 * M(:,:,2) + 0.0722 * M(:,:,3);
+  Y = luminance (M);
   tol = 0.05 * max (mean (Y(:)), 0);
   neg = M < 0;
   if (any (M(:) < -tol) || ! any (M(:) > 0))
@@ -121,7 +121,7 @@ function M = env_sky ()
   [c, r] = meshgrid ((0:W-1) + 0.5, (0:H-1) + 0.5);
   th = r / H * pi;
   ph = c / W * 2 * pi - pi;
-  d = cat (3, sin (th) .* sin (ph), cos (th), -sin (th) .* cos (ph));
+  d = reshape (env_dirs (th(:), ph(:)), H, W, 3);
   el = pi / 2 - th;
   sky = [0.35 0.55 1.0];
   hor = [1.0 0.95 0.9];

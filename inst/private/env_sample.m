@@ -28,8 +28,8 @@ function [L, wt] = env_sample (D, u, v)
   th = (r - 1 + min (max (fu, 0), 1)) / H * pi;
   ph = (c - 1 + min (max (fv, 0), 1)) / W * 2 * pi - pi;
   st = sin (th);
-  Lm = [st .* sin(ph), cos(th), -st .* cos(ph)];
-  L = Lm * D.R.';
+  [Lm, R] = env_dirs (th, ph, D.rotation);
+  L = Lm * R.';
   k = r + (c - 1) * H;                         # column-major texel
   pk = D.p(k);
   ## density in solid angle: pk / (dtheta dphi sin theta)

@@ -7,7 +7,9 @@
 ## tables and scene parts already computed, no numerics of their own.
 ## @var{what} is one of @code{"table"} (one term's nested pigment_maps),
 ## @code{"gamma"} (a perspective camera's pigment over gamma levels),
-## @code{"header"}, @code{"camera"}, @code{"light"}, @code{"texture"},
+## @code{"header"}, @code{"frames"} (the head of a scene of K lights, one
+## frame each, which includes BASE_Lkkkk.inc in frame k), @code{"camera"},
+## @code{"light"}, @code{"texture"},
 ## @code{"objects"} (returns the text and the faces left out) and
 ## @code{"vec"} (a 3-vector as <x, y, z>).
 ## @end deftypefn
@@ -21,6 +23,8 @@ function varargout = pov_sdl (what, varargin)
       [varargout{1:max (nargout, 1)}] = table_sdl (varargin{:});
     case "header"
       [varargout{1:max (nargout, 1)}] = header_sdl (varargin{:});
+    case "frames"
+      [varargout{1:max (nargout, 1)}] = frames_sdl (varargin{:});
     case "camera"
       [varargout{1:max (nargout, 1)}] = camera_sdl (varargin{:});
     case "light"
@@ -97,6 +101,24 @@ function s = header_sdl (scene, material, opt, tabs, rng_i, rng_o, peak, C)
   endif
   s = [s, sprintf("#version 3.7;\nglobal_settings { assumed_gamma 1.0 ambient_light rgb 0 }\n"), ...
        sprintf("background { rgb %s }\n", vec (bg))];
+endfunction
+
+## the head of a scene of K directional lights, one per frame: frame k
+## includes BASE_Lkkkk.inc (light k and its tables); the background is in
+## frame 1 only, so that the frames add up to the image
+function s = frames_sdl (scene, material, K, base)
+  bg = double (scene.background(:)') .* [1 1 1];
+  s = sprintf (["// POV-Ray 3.7 scene written by pov_write_scene (lafortune package)\n" ...
+                "// scene '%s', material '%s', %d x %d pixels, %d directional lights, one per frame:\n" ...
+                "// frame k includes %s_Lkkkk.inc (light k and its tables); the image is the sum of the frames\n" ...
+                "// render: povray +I<this> +O<out>.exr +FE +W%d +H%d -A File_Gamma=1.0 +KFI1 +KFF%d\n" ...
+                "#version 3.7;\nglobal_settings { assumed_gamma 1.0 ambient_light rgb 0 }\n" ...
+                "#if (frame_number < 1 | frame_number > %d)\n" ...
+                "#error \"render this scene as an animation, +KFI1 +KFF%d: frame k is light k\"\n#end\n" ...
+                "#if (frame_number = 1) background { rgb %s } #else background { rgb 0 } #end\n" ...
+                "#include concat (\"%s_L\", str (frame_number, -4, 0), \".inc\")\n"],
+               name_of (scene), name_of (material), scene.width, scene.height, K, base,
+               scene.width, scene.height, K, K, K, vec (bg), base);
 endfunction
 
 function s = camera_sdl (cam, scene)

@@ -22,7 +22,7 @@ function [rgb, exposure] = tonemap (img, exposure, fname)
              "%s: EXPOSURE must be a finite real scalar (stops) or \"auto\", got \"%s\"",
              fname, exposure);
     endif
-    Y = 0.2126 * img(:,:,1) + 0.7152 * img(:,:,2) + 0.0722 * img(:,:,3);
+    Y = luminance (img);
     Y = sort (Y(isfinite (Y)));
     if (isempty (Y))
       exposure = 0;
