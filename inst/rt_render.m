@@ -273,28 +273,37 @@ function [img, info, cache] = rt_render (scene, material, varargin)
   endif
   keep = nargout > 2 && ! strcmp (mode, "direct") && ! cached;
   nevals = 0;
-  if (keep)
+  if (keep && strcmp (mode, "slice"))
     chunks = cell (1, ceil (total / chunk));
   endif
   if (opt.progress)
     prog = progress_line ("rt_render");
   endif
-  ## from the cache in lights mode, the material is evaluated on all the
-  ## chunks' samples at once (the cache keeps their X in one array; the
-  ## compiled core shares big calls out over the cores): the values are the
-  ## same, the sums per chunk as before
-  Fc = [];
-  if (cached && strcmp (mode, "lights"))
-    t1 = tic ();
-    Fc = batch_eval (material, opt.cache.X, 2 ^ 22);
-    off = [0, cumsum(opt.cache.rows)];
-    t_brdf += toc (t1);
-    t_shade += toc (t1);
+  ## lights mode shades after the trace, many chunks' light samples in one
+  ## evaluation of the material (the compiled core shares big calls out over
+  ## the cores), the sums chunk by chunk; from a cache it only shades
+  lights = strcmp (mode, "lights");
+  if (lights)
+    batch = 2 ^ 18;                    # light samples shaded at once
+    if (cached)
+      chunks = opt.cache.chunks;
+      Xall = opt.cache.X;
+      nrow = opt.cache.rows;
+    else
+      chunks = cell (1, ceil (total / chunk));
+      nrow = zeros (1, numel (chunks));
+      Xs = cell (1, numel (chunks));
+    endif
+    done = 0;                          # the chunks shaded so far
+  endif
+  last = total - 1;
+  if (lights && cached)                # nothing to trace
+    last = -1;
   endif
   state = rand ("state");
   unwind_protect
     rand ("state", scene.seed);
-    for k0 = 0:chunk:total-1
+    for k0 = 0:chunk:last
       m = min (chunk, total - k0);
       ic = k0 / chunk + 1;
       k = k0 + (0:m-1).';
@@ -312,14 +321,29 @@ function [img, info, cache] = rt_render (scene, material, varargin)
         nshadow += T.nshadow;
       endif
 
-      t0 = tic ();
-      if (! cached && strcmp (mode, "lights"))
-        Tc = struct ("h", int32 (T.h(T.S.own)), "X", T.S.X, "w", single (T.S.w),
-                     "miss", T.miss);
-        if (keep)
-          chunks{ic} = Tc;
+      if (lights)                      # kept, and shaded a batch at a time
+        chunks{ic} = struct ("h", int32 (T.h(T.S.own)), "w", single (T.S.w), "miss", T.miss);
+        Xs{ic} = T.S.X;
+        nrow(ic) = rows (T.S.X);
+        if (sum (nrow(done+1:ic)) >= batch || k0 + m >= total)
+          t0 = tic ();
+          [acc, te] = shade_lights (acc, material, vertcat (Xs{done+1:ic}), chunks, nrow,
+                                    done+1:ic, chunk, total, npix, bg);
+          t_brdf += te;
+          t_shade += toc (t0);
+          if (! keep)
+            [Xs{done+1:ic}] = deal ([]);
+          endif
+          done = ic;
         endif
-      elseif (! cached)
+        if (opt.progress)
+          prog = progress_line (prog, (k0 + m) / total, toc (t_start));
+        endif
+        continue;
+      endif
+
+      t0 = tic ();
+      if (! cached)
         il = find (T.lit);
         if (strcmp (mode, "slice"))
           Tc = struct ("h", int32 (T.h(il)), "w", slice_weights (sl, T.Ns(il,:)),
@@ -333,18 +357,6 @@ function [img, info, cache] = rt_render (scene, material, varargin)
         rad = double (slice_lookup (Rm, Tc.w)) .* Tc.cosi;
         lith = Tc.h;
         miss = Tc.miss;
-      elseif (strcmp (mode, "lights"))
-        if (cached)
-          rad = Fc(off(ic)+1:off(ic+1),:);
-        else
-          t1 = tic ();
-          rad = material_x (material, Tc.X);
-          t_brdf += toc (t1);
-        endif
-        rad .*= double (Tc.w);
-        nevals += rows (rad);
-        lith = Tc.h;
-        miss = Tc.miss;
       else
         rad = zeros (numel (il), 3);
         if (! isempty (il))
@@ -354,19 +366,7 @@ function [img, info, cache] = rt_render (scene, material, varargin)
         lith = T.h(il);
         miss = T.miss;
       endif
-      ## each pixel's sum over the chunk's samples in their order; the
-      ## samples that add 0 (shadow, and misses on a black background) are
-      ## left out, which changes no bit of the sum
-      j = double (lith);
-      if (any (bg))
-        j = [j; find(miss)];
-        rad = [rad; repmat(bg, nnz (miss), 1)];
-        [j, o] = sort (j);
-        rad = rad(o,:);
-      endif
-      for c = 1:3
-        acc(:,c) += accumarray (pix(j), rad(:,c), [npix 1]);
-      endfor
+      acc = add_samples (acc, pix, lith, rad, miss, bg);
       t_shade += toc (t0);
 
       if (opt.progress)
@@ -376,14 +376,28 @@ function [img, info, cache] = rt_render (scene, material, varargin)
   unwind_protect_cleanup
     rand ("state", state);
   end_unwind_protect
+  if (lights && cached)                # the cache's chunks, a batch at a time
+    off = [0, cumsum(nrow)];
+    while (done < numel (chunks))
+      upto = max (done + 1, find (off(2:end) - off(done+1) <= batch, 1, "last"));
+      t0 = tic ();
+      [acc, te] = shade_lights (acc, material, Xall(off(done+1)+1:off(upto+1),:), chunks,
+                                nrow, done+1:upto, chunk, total, npix, bg);
+      t_brdf += te;
+      t_shade += toc (t0);
+      done = upto;
+    endwhile
+  endif
+  if (lights)
+    nevals = sum (nrow);
+  endif
   img = reshape (acc / spp, H, W, 3);
   cache = [];
   if (keep)
     cache = struct ("key", key, "chunks", {chunks}, "nshadow", nshadow);
-    if (strcmp (mode, "lights"))         # every light sample's X in one array
-      cache.rows = cellfun (@(c) rows (c.X), chunks);
-      cache.X = vertcat (cellfun (@(c) c.X, chunks, "UniformOutput", false){:});
-      cache.chunks = cellfun (@(c) rmfield (c, "X"), chunks, "UniformOutput", false);
+    if (lights)                        # every light sample's X in one array
+      cache.rows = nrow;
+      cache.X = vertcat (Xs{:});
     endif
   elseif (cached)
     cache = opt.cache;
@@ -404,17 +418,39 @@ function [img, info, cache] = rt_render (scene, material, varargin)
   endif
 endfunction
 
-## material_x on the rows of X, N at a time (bounds the temporaries)
-function F = batch_eval (material, X, N)
-  n = rows (X);
-  if (n <= N)
-    F = material_x (material, X);
-    return;
+## Lights mode: the chunks IC (whose light samples' X, stacked, are X) shaded
+## by MATERIAL in one evaluation and added to ACC chunk by chunk; TE is the
+## evaluation's time
+function [acc, te] = shade_lights (acc, material, X, chunks, nrow, ic, chunk, total, npix, bg)
+  t1 = tic ();
+  F = material_x (material, X);
+  te = toc (t1);
+  r0 = 0;
+  for i = ic
+    Tc = chunks{i};
+    k0 = (i - 1) * chunk;
+    pix = mod (k0 + (0:min (chunk, total - k0)-1).', npix) + 1;
+    rad = F(r0+1:r0+nrow(i),:) .* double (Tc.w);
+    r0 += nrow(i);
+    acc = add_samples (acc, pix, Tc.h, rad, Tc.miss, bg);
+  endfor
+endfunction
+
+## each pixel's sum over a chunk's samples (pixels PIX) in their order: the
+## lit samples LITH with radiance RAD, the misses MISS with the background
+## BG; the samples that add 0 (shadow, and misses on a black background) are
+## left out, which changes no bit of the sum
+function acc = add_samples (acc, pix, lith, rad, miss, bg)
+  npix = rows (acc);
+  j = double (lith);
+  if (any (bg))
+    j = [j; find(miss)];
+    rad = [rad; repmat(bg, nnz (miss), 1)];
+    [j, o] = sort (j);
+    rad = rad(o,:);
   endif
-  F = zeros (n, 3);
-  for i = 1:N:n
-    j = min (i + N - 1, n);
-    F(i:j,:) = material_x (material, X(i:j,:));
+  for c = 1:3
+    acc(:,c) += accumarray (pix(j), rad(:,c), [npix 1]);
   endfor
 endfunction
 
