@@ -90,13 +90,13 @@ function [scene, info] = scene_lights (scene, K)
     thm = (r(1) + r(2) - 1) / 2 / H * pi;
     byrow = nr > 1 && (nc == 1 || nr * pi / H >= nc * 2 * pi / W * sin (thm));
     if (byrow)
-      c = arrayfun (@(q) box (r(1), q, r(3), r(4)), r(1):r(2)-1);
+      c = box (r(1), r(1):r(2)-1, r(3), r(4));
       [~, j] = min (abs (c - en(i) / 2));
       q = r(1) + j - 1;
       a = [r(1) q r(3) r(4)];
       b = [q+1 r(2) r(3) r(4)];
     else
-      c = arrayfun (@(q) box (r(1), r(2), r(3), q), r(3):r(4)-1);
+      c = box (r(1), r(2), r(3), r(3):r(4)-1);
       [~, j] = min (abs (c - en(i) / 2));
       q = r(3) + j - 1;
       a = [r(1) r(2) r(3) q];
