@@ -114,6 +114,14 @@ function [model, info, models] = brdf_fit (S, type, nlobes, varargin)
     opt.tries = merge (scene, 4, 2);
   endif
   opt = fit_defaults (opt, S);
+  if (strcmp (opt.weight, "select"))    # the general fit: chosen by the table's views
+    V = select_views (S, fname);
+    S = rmfield (S, "views");
+    [model, info, models] = fit_select (V, nlobes,
+                                        @(w) brdf_fit (S, type, nlobes, varargin{:}, "weight", w));
+    info.type = type;
+    return;
+  endif
   opt = check_opts (opt, fname);
   [S, wt, n0] = fit_table (S, opt.weight, fname);
   pkg_load_optim ();

@@ -69,12 +69,25 @@
 ## A bin whose weight is at least the sampling step T is kept with its own
 ## weight; every other drawn bin gets the weight T, so the weights still sum
 ## to the total.
+## @item "views"
+## true (default): attach the training views of the general fit,
+## @code{S.views}: the material rendered on a small sphere under three
+## directional lights, with the renders' traces.
+## @code{lafortune_fit (S, n)} and @code{brdf_fit (S, type, n)} then fit
+## the table with several weightings (log and cube root) and
+## keep, for each lobe count, the fit that looks best in these views by
+## FLIP (a fit of fewer lobes, padded with zero lobes, when that looks
+## better): the recommended fit when the scene is not known.  Giving the
+## fit a @qcode{"weight"} fits that weighting alone.  false: no views
+## (the fit's default weighting is then log).
 ## @end table
 ##
 ## @var{S} has the fields of @code{merl_plane}'s result (@code{wi}, @code{wo},
 ## @code{rgb}, @code{theta_i}, @code{theta_o}, @code{name}) with
 ## @code{kind} = @code{"hemisphere"}, @code{index} (the bins' indices),
-## @code{weight} (N x 1) and @code{measure} (the measure's name).
+## @code{weight} (N x 1), @code{measure} (the measure's name) and
+## @code{views} (struct array, empty without them: @code{scene},
+## @code{cache}, @code{ref}).
 ##
 ## @example
 ## @group
@@ -82,6 +95,8 @@
 ## S = merl_samples (brdf, "max_samples", 2e5);
 ## sum (S.weight)                    # (2 pi (1 - cosd (80)))^2 = 26.96
 ## e = lafortune_error (lafortune_fit (S, 2), S, "log")
+## [fit, info] = lafortune_fit (merl_samples (brdf), 3);  # the general fit
+## info.weight                       # the weighting it chose
 ## @end group
 ## @end example
 ## @seealso{merl_plane, lafortune_fit, lafortune_error}
@@ -92,7 +107,8 @@ function S = merl_samples (brdf, varargin)
   endif
   check_merl (brdf, "merl_samples");
   opt = parse_opts (varargin, "merl_samples",
-                    struct ("max_angle", 80, "max_samples", Inf, "measure", "solid_angle"));
+                    struct ("max_angle", 80, "max_samples", Inf, "measure", "solid_angle",
+                            "views", true));
   if (! isnumeric (opt.max_angle) || ! isscalar (opt.max_angle)
       || ! (opt.max_angle > 0 && opt.max_angle <= 90))
     error ("lafortune:badOption", "merl_samples: MAX_ANGLE must be a scalar in (0, 90] degrees");
@@ -105,6 +121,11 @@ function S = merl_samples (brdf, varargin)
   if (! ischar (opt.measure) || ! any (strcmp (opt.measure, measures)))
     error ("lafortune:badOption", "merl_samples: MEASURE must be one of %s",
            strjoin (measures, ", "));
+  endif
+  if (! ((islogical (opt.views) || isnumeric (opt.views)) && isscalar (opt.views)
+         && any (opt.views == [0 1])))
+    error ("lafortune:badOption", "merl_samples: VIEWS must be true or false, got %s",
+           num2str (opt.views));
   endif
   w = merl_weights (double (opt.max_angle), opt.measure);
   idx = find (brdf.valid & w > 0);
@@ -125,7 +146,10 @@ function S = merl_samples (brdf, varargin)
   S = struct ("wi", wi, "wo", wo, "rgb", brdf.data(idx,:),
               "theta_i", acosd (min (wi(:,3), 1)), "theta_o", acosd (min (wo(:,3), 1)),
               "name", name, "kind", "hemisphere", "index", idx,
-              "weight", w, "measure", opt.measure);
+              "weight", w, "measure", opt.measure, "views", []);
+  if (opt.views)
+    S.views = fit_views (brdf);
+  endif
 endfunction
 
 ## M of the units with weights W (positive column), drawn with probability
@@ -162,7 +186,7 @@ endfunction
 %!test
 %! m = struct ("rho_d", [0.3 0.2 0.1], "Cxy", [-1 -1 -1], "Cz", [1 1 1], "e", [10 10 10]);
 %! bm = merl_synth (m, "missing", 70);
-%! S = merl_samples (bm);
+%! S = merl_samples (bm, "views", false);
 %! assert (S.kind, "hemisphere");
 %! assert (S.measure, "solid_angle");
 %! assert (all (bm.valid(S.index)));
@@ -172,31 +196,45 @@ endfunction
 %! assert (max ([S.theta_i; S.theta_o]) < 81);
 %! ## the samples sit at the grid points: the model there equals the data
 %! assert (S.rgb, lafortune_eval (m, S.wi, S.wo), -1e-9);
-%! S2 = merl_samples (bm, "max_samples", 1000);
+%! S2 = merl_samples (bm, "max_samples", 1000, "views", false);
 %! assert (numel (S2.index), 1000);
 %! assert (numel (unique (S2.index)), 1000);
 %! assert (all (ismember (S2.index, S.index)));
 %! assert (sum (S2.weight), sum (S.weight), 1e-12 * sum (S.weight));
 
 %!test
+%! ## the training views of the general fit: the material's renders and traces
+%! bm = merl_synth (struct ("rho_d", [0.3 0.2 0.1], "Cxy", [-1 -1 -1], "Cz", [1 1 1], "e", [10 10 10]));
+%! S = merl_samples (bm, "max_samples", 2000);
+%! assert (numel (S.views), 3);
+%! for v = S.views
+%!   assert (v.ref, rt_render (v.scene, bm, "progress", false), 1e-12);
+%!   assert (any (v.ref(:) > 0));
+%! endfor
+%! S = merl_samples (bm, "max_samples", 2000, "views", false);
+%! assert (isempty (S.views));
+
+%!error <VIEWS must be true or false> merl_samples (b, "views", "yes")
+
+%!test
 %! ## total measure of the kept region: (2 pi (1 - cos max_angle))^2, also
 %! ## after drawing max_samples (the weights are rescaled, the sum kept)
 %! for a = [30 60 80]
 %!   tot = (2 * pi * (1 - cosd (a))) ^ 2;
-%!   S = merl_samples (b, "max_angle", a);
+%!   S = merl_samples (b, "max_angle", a, "views", false);
 %!   assert (sum (S.weight), tot, 1e-5 * tot);
 %! endfor
 %! for M = [1 5000 50000 numel(S.weight)-1]
-%!   Sm = merl_samples (b, "max_samples", M);
+%!   Sm = merl_samples (b, "max_samples", M, "views", false);
 %!   assert (numel (Sm.weight), M);
 %!   assert (sum (Sm.weight), sum (S.weight), 1e-10 * tot);
 %! endfor
 %! ## the cosine (Ngan) and projected measures: int cos^2 theta_i and
 %! ## int cos theta_i cos theta_o over the region
 %! c = cosd (80);
-%! S = merl_samples (b, "measure", "cosine");
+%! S = merl_samples (b, "measure", "cosine", "views", false);
 %! assert (sum (S.weight), 2 * pi * (1 - c) * 2 * pi * (1 - c ^ 3) / 3, -1e-5);
-%! S = merl_samples (b, "measure", "projected");
+%! S = merl_samples (b, "measure", "projected", "views", false);
 %! assert (sum (S.weight), (pi * (1 - c ^ 2)) ^ 2, -1e-5);
 
 %!test
@@ -205,9 +243,9 @@ endfunction
 %! rho = [0.8 0.5 0.2];
 %! m = struct ("rho_d", rho, "Cxy", zeros (0, 3), "Cz", zeros (0, 3), "e", zeros (0, 3));
 %! bl = merl_synth (m);
-%! S = merl_samples (bl, "max_angle", 90, "measure", "projected");
+%! S = merl_samples (bl, "max_angle", 90, "measure", "projected", "views", false);
 %! assert (sum (S.weight .* S.rgb) / pi, rho, 1e-3 * rho);
-%! Sm = merl_samples (bl, "max_angle", 90, "measure", "projected", "max_samples", 20000);
+%! Sm = merl_samples (bl, "max_angle", 90, "measure", "projected", "max_samples", 20000, "views", false);
 %! assert (sum (Sm.weight .* Sm.rgb) / pi, rho, 1e-3 * rho);
 
 %!test
@@ -216,7 +254,7 @@ endfunction
 %! ## the database's lookup, fill groups of bins in proportion to the weights
 %! bi = b;
 %! bi.data(:,1) = (1:1458000)';
-%! S = merl_samples (b, "max_angle", 90);
+%! S = merl_samples (b, "max_angle", 90, "views", false);
 %! n = 4e5;
 %! g = 1.1673039782614187;           # x^5 = x + 1: the R4 sequence
 %! U = mod (0.5 + (1:n)' * g .^ -(1:4), 1);
@@ -238,13 +276,13 @@ endfunction
 %!test
 %! ## the draw is deterministic and leaves the random generators alone
 %! st = rand ("state"); sn = randn ("state");
-%! S1 = merl_samples (b, "max_samples", 3000);
-%! S2 = merl_samples (b, "max_samples", 3000);
+%! S1 = merl_samples (b, "max_samples", 3000, "views", false);
+%! S2 = merl_samples (b, "max_samples", 3000, "views", false);
 %! assert (isequal (S1.index, S2.index) && isequal (S1.weight, S2.weight));
 %! assert (isequal (rand ("state"), st) && isequal (randn ("state"), sn));
 %! ## drawn in proportion to the measure: the mean weight per drawn sample
 %! ## is the same in every theta_h block (up to certainty units)
-%! S = merl_samples (b);
+%! S = merl_samples (b, "views", false);
 %! ih = floor ((S1.index - 1) / 16200);
 %! ihall = floor ((S.index - 1) / 16200);
 %! share = accumarray (floor (ih / 10) + 1, 1, [9 1]) / 3000;

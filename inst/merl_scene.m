@@ -200,7 +200,7 @@ function [S, img] = merl_scene (material, scene, varargin)
               "irradiance", irr, "peak", max (img(:)), "name", name_of (material), "scene", name_of (scene),
               "bin", opt.bin, "samples", ns, "prior", [], "prior_weight", 0);
   if (opt.prior > 0 && strcmp (material_kind (material), "merl"))
-    S.prior = merl_samples (material, "max_angle", 80);
+    S.prior = merl_samples (material, "max_angle", 80, "views", false);
     S.prior_weight = opt.prior;
   endif
 endfunction

@@ -144,7 +144,7 @@ endif
 
 ## every valid bin of the hemisphere: the fit on (a, c) cells against the
 ## fit on all distinct (a, c) pairs (exactly the fit on all samples)
-H = merl_samples (brdf);
+H = merl_samples (brdf, "views", false);
 printf ("\nHemisphere, every valid bin (%d samples), 3 lobes RGB: default reduction against the exact one\n", rows (H.wi));
 printf ("%-14s | %-8s | %-8s | %-10s | %-12s\n", "reduction", "groups", "time s", "rmse", "rel. to exact");
 tic; [me, ie] = lafortune_fit (H, 3, "reduce", "exact"); te = toc;
@@ -159,7 +159,7 @@ endfor
 printf ("%-14s | %-8d | %-8.2f | %-10.5g |\n", ie.reduce, ie.groups, te, mean (ie.rmse));
 proxy2 = bench_data ("red-plastic");
 if (! isempty (proxy2))
-  H2 = merl_samples (merl_read (proxy2));
+  H2 = merl_samples (merl_read (proxy2), "views", false);
   tic; [~, i2] = lafortune_fit (H2, 3); t2 = toc;
   printf ("red-plastic, every valid bin (%d samples), 3 lobes RGB, default (%s, %d groups): %.2f s, rmse %.5g\n", ...
           rows (H2.wi), i2.reduce, i2.groups, t2, mean (i2.rmse));

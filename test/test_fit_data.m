@@ -43,7 +43,7 @@
 %! p = __proxy ("red-plastic");
 %! if (! isempty (p))
 %!   b = merl_read (p);
-%!   S = merl_samples (b, "max_samples", 5000);
+%!   S = merl_samples (b, "max_samples", 5000, "views", false);
 %!   [m, info] = lafortune_fit (S, 3);
 %!   P = merl_plane (b, "step", 0.5);
 %!   f = lafortune_eval (m, P.wi, P.wo);
@@ -60,7 +60,7 @@
 %! if (! isempty (p))
 %!   warning ("off", "lafortune:notConverged", "local");
 %!   b = merl_read (p);
-%!   H = merl_samples (b);
+%!   H = merl_samples (b, "views", false);
 %!   H.weight = sind (H.theta_i) .* sind (H.theta_o) + 0.1;   # our own weights
 %!   [m, info] = lafortune_fit (H, 3);
 %!   assert (info.reduce, "grid 512");
@@ -68,7 +68,7 @@
 %!   assert (all (isfinite ([m.rho_d m.Cxy(:)' m.Cz(:)' m.e(:)'])));
 %!   assert (max (info.rel_rmse) < 0.5);
 %!   assert (all (all (diff (info.history) <= 1e-6 * info.history(1,:))));
-%!   Hs = merl_samples (b, "max_samples", 20000);
+%!   Hs = merl_samples (b, "max_samples", 20000, "views", false);
 %!   Hs.weight = sind (Hs.theta_i) .* sind (Hs.theta_o) + 0.1;
 %!   [me, ie] = lafortune_fit (Hs, 2, "reduce", "exact");
 %!   [mg, ig] = lafortune_fit (Hs, 2, "reduce", 256);
@@ -110,7 +110,7 @@
 %!   unwind_protect
 %!     [st, out] = system (sprintf ("'%s' '%s' gray-plastic 2>&1", tool, d));
 %!     assert (st == 0, "%s", out);
-%!     S = merl_samples (merl_read (fullfile (d, "gray-plastic.binary")), "max_samples", 40000);
+%!     S = merl_samples (merl_read (fullfile (d, "gray-plastic.binary")), "max_samples", 40000, "views", false);
 %!     [m, info] = lafortune_fit (S, 3);
 %!     assert (all (isfinite ([m.rho_d m.Cxy(:)' m.Cz(:)' m.e(:)'])));
 %!     assert (all (m.rho_d >= 0) && all (m.e(:) >= 0));

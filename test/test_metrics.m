@@ -50,8 +50,8 @@
 %!                 "Cz", [1 1 1; 0.72 0.72 0.72], "e", [200 200 200; 8 8 8]);
 %! b = merl_synth (truth);
 %! m = struct ("rho_d", [0.06 0.12 0.03], "Cxy", -[1 1 1], "Cz", [0.97 0.97 0.97], "e", [60 60 60]);
-%! S = merl_samples (b);
-%! Sm = merl_samples (b, "max_samples", 20000);
+%! S = merl_samples (b, "views", false);
+%! Sm = merl_samples (b, "max_samples", 20000, "views", false);
 %! tol = struct ("plain", 0.05, "cosine", 0.05, "relative", 0.01, "log", 0.01, "cuberoot", 0.01);
 %! for name = fieldnames (tol)'
 %!   e = lafortune_error (m, S, name{1});
@@ -94,8 +94,8 @@
 %!     continue;
 %!   endif
 %!   b = merl_read (p);
-%!   S = merl_samples (b);
-%!   Sm = merl_samples (b, "max_samples", 20000);
+%!   S = merl_samples (b, "views", false);
+%!   Sm = merl_samples (b, "max_samples", 20000, "views", false);
 %!   for name = {"plain", "cosine", "relative", "log", "cuberoot"}
 %!     e = lafortune_error (fits{i,2}, S, name{1});
 %!     em = lafortune_error (fits{i,2}, Sm, name{1});

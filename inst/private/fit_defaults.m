@@ -2,14 +2,30 @@
 ## SPDX-License-Identifier: GPL-3.0-or-later
 
 ## The defaults that depend on the table: for a scene table (merl_scene,
-## S.kind "scene") the fit that looks best in the picture, as measured by
+## S.kind "scene") the fit that looks best in that scene, as measured by
 ## FLIP and CIEDE2000 on the 26 materials of ../shared (README, "Fits that
-## look right"); for any other table the paper's fit (plain weights, each
-## channel alone)
+## look right"); for a hemisphere table (merl_samples) the general fit, the
+## one that looks best in light it was not made for (README, "One fit for
+## every scene"): with the table's training views (S.views) the weighting
+## chosen by them ("select": fit_select), without them log weights; for
+## any other table, such as the in-plane one, the paper's fit (plain
+## weights, each channel alone)
 function opt = fit_defaults (opt, S)
-  scene = isstruct (S) && isscalar (S) && isfield (S, "kind") && ischar (S.kind) && strcmp (S.kind, "scene");
+  kind = "";
+  if (isstruct (S) && isscalar (S) && isfield (S, "kind") && ischar (S.kind))
+    kind = S.kind;
+  endif
+  scene = strcmp (kind, "scene");
   if (isempty (opt.weight))
-    opt.weight = merge (scene, "relative", "plain");
+    if (scene)
+      opt.weight = "relative";
+    elseif (strcmp (kind, "hemisphere") && isfield (S, "views") && ! isempty (S.views))
+      opt.weight = "select";
+    elseif (strcmp (kind, "hemisphere"))
+      opt.weight = "log";
+    else
+      opt.weight = "plain";
+    endif
   endif
   if (isempty (opt.color))
     opt.color = "separate";             # each channel alone, for every table
