@@ -89,6 +89,11 @@ RESULTS ?= results
 endif
 MESH ?=
 export RESULTS MERL_DIR QUICK MESH
+# the settings of config.mk set empty on the command line (JUDGE=, PUBLISHED=):
+# the Octave steps cannot tell an empty environment variable from a missing one
+CONFIG_NAMES := $(shell sed -n 's/^\([A-Z][A-Z0-9_]*\) *?=.*/\1/p' config.mk)
+export LAFORTUNE_EMPTY := $(strip $(foreach v,$(CONFIG_NAMES),$\
+  $(if $(and $(filter command line,$(origin $(v))),$(if $(strip $($(v))),,1)),$(v))))
 octrun = $(OCT) --path $(CURDIR)/inst --path $(CURDIR)/src --path $(CURDIR)/scripts \
   --eval 'sigterm_dumps_octave_core (false); sighup_dumps_octave_core (false); \
   warning ("off", "Octave:shadowed-function"); pkg load optim; $(1)'

@@ -12,11 +12,14 @@ MATERIALS ?= green-metallic-paint red-plastic
 # `make reproduce`: steps run at once (make -j), 0 = one per core; a -j of
 # your own (make -j N reproduce) takes precedence
 JOBS ?= 0
-# fit methods: inplane = the paper's (plane of incidence), hemisphere = the
-# whole valid hemisphere (solid-angle weights), scene = the recommended fit for
-# the best picture (the angle pairs the scene's pixels see, image weights);
-# `make reproduce` needs inplane, `make database` takes any of them
-METHODS ?= inplane hemisphere scene
+# fit methods: inplane = the paper's (plane of incidence), general = the
+# recommended fit when the scene is not known (the whole valid hemisphere,
+# the weighting chosen by renders in training views: lafortune_fit
+# (merl_samples (B), n)), scene = the fit for the scene's own light (the
+# angle pairs its pixels see, relative weights), hemisphere = the whole
+# hemisphere with plain solid-angle weights; `make reproduce` needs
+# inplane, `make database` takes any of them
+METHODS ?= inplane general scene
 # the analytic models fitted by every method (the types of brdf_model ():
 # lafortune blinnphong ward cooktorrance ggx ashikhminshirley).  The
 # Lafortune model keeps the method's name (scene); another model makes a
@@ -52,6 +55,19 @@ ENV_SAMPLES ?= 1 4 16 64 256
 ENV_SAMPLES_QUICK ?= 1 4 16
 ENV_REFERENCE ?= 1024
 ENV_REFERENCE_QUICK ?= 256
+# held-out verdicts: every fit is also judged in the scene lit by each of
+# these lights, which no fit was made for (rt_render, light samples from the
+# trace's cache; img_compare against the measured data under the same
+# light), and every verdict of the reports is made on them.  A word is a
+# light probe of scene_make's "map" (courtyard, city, forest, interior,
+# night, studio, sunrise, sunset: blender-data; sky: the built-in sky) or a
+# directional light X,Y,Z (toward the light; 0.2,1,-0.4 is from behind and
+# above: the grazing angles).  Empty (JUDGE=): in-sample only
+JUDGE ?= courtyard forest 0.2,1,-0.4
+# light samples per pixel sample of the environments, samples per pixel
+JUDGE_SAMPLES ?= 64
+JUDGE_SAMPLES_QUICK ?= 16
+JUDGE_SPP ?= 1
 # `make reproduce`: the study of which fit looks right (scripts/repro_study.m):
 # every table of STUDY_TABLES fitted with every weighting of STUDY_WEIGHTS (and
 # the scene table with image weights), each fit rendered in the scene and in a

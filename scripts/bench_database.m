@@ -14,7 +14,9 @@
 ## Materials: every *.binary in BENCH_MERL_DIR (default: the MERL-format
 ## stand-ins in MERL_PROXY_DIR); settings: the defaults of each version's
 ## config.mk, or what BENCH_MAKE_ARGS adds (e.g. "QUICK=1").  BENCH_BASE=none
-## skips the base.  Prints tables; not a test.  Run: make bench, or
+## skips the base.  This checkout runs twice: with the held-out judging
+## (JUDGE of config.mk) and without it (JUDGE=), so the judging's cost per
+## material is measured in the same run.  Prints tables; not a test.  Run: make bench, or
 ##   octave-cli scripts/bench_database.m
 
 1;
@@ -55,7 +57,8 @@ jobs = max (nproc (), 2);
 printf ("bench_database: %d materials from %s, settings: %s, %d cores\n", n, merl,
         ifelse_str (isempty (args), "config.mk defaults", args), nproc ());
 ## the versions: this checkout, and the base exported and built in scratch
-V = struct ("name", "this checkout", "top", top);
+V = struct ("name", {"this checkout", "this checkout, JUDGE= (no held-out judging)"}, "top", top,
+            "args", {args, [args " JUDGE="]});
 base = getenv ("BENCH_BASE");
 if (isempty (base))
   base = "910a12b";
@@ -75,23 +78,23 @@ unwind_protect
       endif
       error ("bench_database: cannot export and build %s: %s", base, log);
     endif
-    V(2) = struct ("name", sprintf ("base %s", base), "top", bt);
+    V(end+1) = struct ("name", sprintf ("base %s", base), "top", bt, "args", args);
   endif
   system (sprintf ("make --no-print-directory -s -C '%s/src' > /dev/null", top));
   for v = 1:numel (V)
     printf ("bench_database: %s, 1 job\n", V(v).name);
     fflush (stdout);
-    [V(v).w1, V(v).S] = run_db (V(v).top, merl, 1, args);
+    [V(v).w1, V(v).S] = run_db (V(v).top, merl, 1, V(v).args);
     printf ("bench_database: %s, %d jobs\n", V(v).name, jobs);
     fflush (stdout);
-    V(v).wj = run_db (V(v).top, merl, jobs, args);
+    V(v).wj = run_db (V(v).top, merl, jobs, V(v).args);
   endfor
 unwind_protect_cleanup
   confirm_recursive_rmdir (false, "local");
   rmdir (scratch, "s");
 end_unwind_protect
 
-printf ("\n| version | jobs | wall time (s) | s per material | base / this |\n|---|---|---|---|---|\n");
+printf ("\n| version | jobs | wall time (s) | s per material | it / this checkout |\n|---|---|---|---|---|\n");
 for v = 1:numel (V)
   printf ("| %s | 1 | %.1f | %.1f | %s |\n", V(v).name, V(v).w1, V(v).w1 / n,
           ifelse_str (v == 1, "", sprintf ("%.2f", V(v).w1 / V(1).w1)));

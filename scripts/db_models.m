@@ -8,11 +8,14 @@
 ## returns its numbers @var{S} for summary.json.  @var{c}: repro_config;
 ## @var{D}: the materials' records as db_report reads them; @var{ok}: the
 ## processed materials (indices into @var{mats}); @var{X}: the measures,
-## @code{X.flip.pov.METHOD} (materials x lobes) and the like.
+## @code{X.flip.verdict.METHOD} (materials x lobes: the measure every
+## verdict is made on, held out when there are held-out lights),
+## @code{X.deltae.verdict}, @code{X.psnr.verdict} and the label
+## @code{X.verdict}.
 ##
 ## Each model type of MODELS is fitted by every method of METHODS
 ## (repro_method); a model's fit of a material at a lobe count is its
-## best over those methods by the FLIP of the POV-Ray render (repro_models).
+## best over those methods by the verdict's measure (repro_models).
 ## The section gives, per material, the best model at each lobe count; per
 ## model and lobe count the numbers a model holds (the fit record's
 ## @code{params}: its type's fields) and their bytes as doubles (8 bytes
@@ -26,7 +29,7 @@
 ## @end deftypefn
 function [L, S] = db_models (L, c, D, ok, mats, X)
   nk = numel (c.lobes);
-  [M, B] = repro_models (c, X.flip.pov);
+  [M, B] = repro_models (c, X.flip.verdict);
   metal = ismember (mats, c.metals);
   metal = metal(:);
   isok = false (numel (mats), 1);
@@ -36,10 +39,10 @@ function [L, S] = db_models (L, c, D, ok, mats, X)
   L{end+1} = sprintf (["Models (MODELS): %s. Each is fitted by every method of METHODS (`brdf_fit`; the " ...
                        "method `scene` fits the Lafortune model, `scene_ggx` GGX with the same table and " ...
                        "options); a model's fit of a material at a lobe count is its best over those methods by " ...
-                       "FLIP (POV-Ray renders; every fit's numbers, rt_render's too, are in `table.csv`). " ...
+                       "%s (every fit's numbers, in-sample and held out, are in `table.csv`). " ...
                        "Metals (METALS in config.mk): %s; the other %d processed materials are the non-metals."],
                       strjoin (arrayfun (@(m) sprintf ("%s (%s)", m.model, m.title), M, "uniformoutput", false), ", "),
-                      names_or_none (mats(metal & isok)), nnz (! metal & isok));
+                      X.verdict, names_or_none (mats(metal & isok)), nnz (! metal & isok));
   L{end+1} = "";
   ## (lists of structs as cells: jsonencode writes an empty struct array as
   ## a name without a value)
@@ -119,7 +122,7 @@ function [L, S] = db_models (L, c, D, ok, mats, X)
       de = nan (numel (mats), 1);
       for i = ok
         if (! isempty (M(t).method{i,j}))
-          de(i) = X.deltae.pov.(M(t).method{i,j})(i,j);
+          de(i) = X.deltae.verdict.(M(t).method{i,j})(i,j);
         endif
       endfor
       s.params(j) = median (np);
@@ -167,6 +170,20 @@ function [L, S] = db_models (L, c, D, ok, mats, X)
                         nnz (metal & isok),
                         strjoin (arrayfun (@(j) sprintf ("%d", nnz (lose(! metal,j))), 1:nk, "uniformoutput", false), " / "),
                         nnz (! metal & isok));
+    g = find (strcmp ({M.model}, "ggx"));
+    if (! isempty (g))
+      ## Lavoue et al.'s split: GGX ahead of Lafortune on metals, not on the rest
+      mm = @(F, w) arrayfun (@(j) nanmed (F(isok & w,j)), 1:nk);
+      gm = mm (M(g).flip, metal) < mm (A.flip, metal);
+      gn = mm (M(g).flip, ! metal) < mm (A.flip, ! metal);
+      S.split = struct ("ggx_better_metals", gm, "ggx_better_nonmetals", gn,
+                        "appears", all (gm) && ! any (gn));
+      L{end+1} = "";
+      L{end+1} = sprintf (["Lavoué et al.'s split (GGX better than Lafortune on the metals and not on the rest), by " ...
+                           "median %s at %s lobes: GGX better on the metals: %s; on the non-metals: %s. " ...
+                           "The split %s."], X.verdict, strjoin (arrayfun (@num2str, c.lobes, "uniformoutput", false), " / "),
+                          yesno (gm), yesno (gn), ifelse (S.split.appears, "appears", "does not appear"));
+    endif
     if (any (lose(:)))
       L{end+1} = "";
       L{end+1} = ["| material | lobes | Lafortune: FLIP (method) | best: model, FLIP (method) | " ...
@@ -177,8 +194,8 @@ function [L, S] = db_models (L, c, D, ok, mats, X)
           d = A.flip(i,j) - B.flip(i,j);
           L{end+1} = sprintf ("| %s | %d | %.3f (%s) | %s, %.3f (%s) | %.3f (%.0f %%) | %.2f → %.2f |",
                               mats{i}, c.lobes(j), A.flip(i,j), A.method{i,j}, B.model{i,j}, B.flip(i,j),
-                              B.method{i,j}, d, 100 * d / A.flip(i,j), X.psnr.pov.(A.method{i,j})(i,j),
-                              X.psnr.pov.(B.method{i,j})(i,j));
+                              B.method{i,j}, d, 100 * d / A.flip(i,j), X.psnr.verdict.(A.method{i,j})(i,j),
+                              X.psnr.verdict.(B.method{i,j})(i,j));
           S.lafortune_loses{end+1} = struct ("material", mats{i}, "lobes", c.lobes(j), "flip", A.flip(i,j),
                                              "method", A.method{i,j}, "winner", B.model{i,j},
                                              "winner_method", B.method{i,j}, "winner_flip", B.flip(i,j),
@@ -212,6 +229,10 @@ function s = num (x, fmt)
   if (isfinite (x))
     s = sprintf (fmt, x);
   endif
+endfunction
+
+function s = yesno (v)
+  s = strjoin (arrayfun (@(x) ifelse (x, "yes", "no"), v, "uniformoutput", false), " / ");
 endfunction
 
 function s = names_or_none (v)

@@ -74,18 +74,49 @@ function db_report ()
   X = struct ();
   for q = {"psnr", "flip", "deltae", "hue"}
     for r = {"pov", "rt"}
-      for m = c.methods
+      for m = [c.methods, {"ngan2005"}]   # and the published fit, where there is one
         X.(q{1}).(r{1}).(m{1}) = nan (numel (mats), nk);
         for i = ok
-          X.(q{1}).(r{1}).(m{1})(i,:) = field_of (D(i).rec.render_fits.(m{1}), [q{1} "_" r{1}], nk);
+          if (isfield (D(i).rec.render_fits, m{1}))
+            X.(q{1}).(r{1}).(m{1})(i,:) = field_of (D(i).rec.render_fits.(m{1}), [q{1} "_" r{1}], nk);
+          endif
         endfor
       endfor
     endfor
   endfor
+  ## held out: the means over JUDGE's lights (repro_judge, rt_render), which
+  ## no fit was made for; every verdict is made on them ("verdict"), and on
+  ## the in-sample POV-Ray renders only without held-out lights
+  nj = numel (c.judge);
+  for q = {"psnr", "flip", "deltae", "hue"}
+    for m = [c.methods, {"ngan2005"}]
+      X.(q{1}).heldout.(m{1}) = nan (numel (mats), nk);
+      X.(q{1}).light.(m{1}) = nan (numel (mats), nk, nj);
+      for i = ok
+        if (isfield (D(i).rec.judge, m{1}))
+          r = D(i).rec.judge.(m{1});
+          n = min (numel (r), nk);
+          X.(q{1}).heldout.(m{1})(i,1:n) = field_of (r, [q{1} "_mean"], n);
+          for l = 1:nj
+            X.(q{1}).light.(m{1})(i,1:n,l) = arrayfun (@(x) x.(q{1})(l), r(1:n));
+          endfor
+        endif
+      endfor
+    endfor
+    X.(q{1}).verdict = X.(q{1}).(ifelse (nj > 0, "heldout", "pov"));
+  endfor
+  if (nj > 0)
+    X.verdict = sprintf ("held-out FLIP (the mean over %s, rt_render; no fit was made for these lights)",
+                         strjoin ({c.judge.label}, ", "));
+  else
+    X.verdict = "in-sample FLIP (POV-Ray renders in the light the scene fits were made for: JUDGE is empty)";
+  endif
   P = X.psnr.pov;
   Q = X.psnr.rt;
   F = X.flip.pov;
   Frt = X.flip.rt;
+  V = X.flip.verdict;                    # the verdicts' measure
+  Vp = X.psnr.verdict;
 
   ## --- table.csv
   ## the methods' models, the tables their errors are on (the methods
@@ -101,6 +132,8 @@ function db_report ()
   for t = err
     head = [head, strcat({"rmse_", "log_rmse_", "cos_rmse_"}, t{1})];
   endfor
+  head = [head, {"flip_heldout", "deltae_heldout", "psnr_heldout", "hue_heldout"}, ...
+          strcat("flip_heldout_", regexprep ({c.judge.name}, "[^A-Za-z0-9]+", "_"))];
   head = [head, {"fit_time_s", "render_time_s", "measured_render_time_s", "params", "json_bytes", ...
                  "albedo_max", "rho_d_r", "rho_d_g", "rho_d_b"}];
   chn = "rgb";
@@ -132,6 +165,7 @@ function db_report ()
           e = r.errors.(t{1});
           v = [v, {mean(e.rmse(k,:)), mean(e.log_rmse(k,:)), mean(e.cos_rmse(k,:))}];
         endfor
+        v = [v, heldout_cells(X, m{1}, i, j, nj)];
         md = lafortune_import ([repro_files("model", D(i).root, mats{i}, m{1}, k) ".json"]);
         alb = "";
         if (isfield (r, "albedo"))
@@ -150,7 +184,7 @@ function db_report ()
       for q = {"psnr", "flip", "deltae", "hue"}
         v = [v, {r.([q{1} "_pov"]), r.([q{1} "_rt"])}];
       endfor
-      v = [v, repmat({""}, 1, 3 * numel (err)), {"", r.pov_time, D(i).rec.render_measured.info.time_total, ...
+      v = [v, repmat({""}, 1, 3 * numel (err)), heldout_cells(X, "ngan2005", i, 1, nj), {"", r.pov_time, D(i).rec.render_measured.info.time_total, ...
                                                   "", "", ""}, param_cells(md, 1, pf, max (c.lobes))];
       rows{end+1} = csv_row (v);
     endif
@@ -200,10 +234,11 @@ function db_report ()
                        "same model to %.1f dB at worst, %.1f dB in the median over the %d fits."],
                       min (ag), median (ag), numel (ag));
   L{end+1} = "";
-  L{end+1} = ["| method | lobes | median PSNR (dB) | median FLIP | median ΔE | median hue (°) | " ...
+  L{end+1} = ["| method | lobes | in-sample: median PSNR (dB) | median FLIP | median ΔE | median hue (°) | " ...
               "worst PSNR (dB) | worst material | best PSNR (dB) | worst FLIP | worst material (FLIP) | " ...
-              "rt_render: median PSNR (dB), FLIP, ΔE, hue (°) | median cosine-weighted rmse |"];
-  L{end+1} = "|---|---|---|---|---|---|---|---|---|---|---|---|---|";
+              "rt_render: median PSNR (dB), FLIP, ΔE, hue (°) | median cosine-weighted rmse | " ...
+              "**held out**: median FLIP, ΔE |"];
+  L{end+1} = "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|";
   sm = struct ("materials", {mats}, "processed", numel (ok), "failed", {{}}, "methods", struct ());
   for m = c.methods
     for j = 1:nk
@@ -211,20 +246,21 @@ function db_report ()
       med = @(q, r) median (X.(q).(r).(m{1})(ok,j));
       cr = arrayfun (@(i) mean (D(i).rec.fit.(m{1}).errors.(repro_method (m{1}).base).cos_rmse(c.lobes(j),:)), ok);
       if (isempty (x))
-        L{end+1} = sprintf ("| %s | %d |%s", repro_method (m{1}).label, c.lobes(j), repmat (" - |", 1, 11));
+        L{end+1} = sprintf ("| %s | %d |%s", repro_method (m{1}).label, c.lobes(j), repmat (" - |", 1, 12));
         continue;
       endif
       [w, iw] = min (x);
       [wf, iwf] = max (F.(m{1})(ok,j));
       L{end+1} = sprintf (["| %s | %d | %.2f | %.3f | %.2f | %.1f | %.2f | %s | %.2f | %.3f | %s | " ...
-                           "%.2f, %.3f, %.2f, %.1f | %.4g |"], repro_method (m{1}).label, c.lobes(j),
+                           "%.2f, %.3f, %.2f, %.1f | %.4g | %.3f, %.2f |"], repro_method (m{1}).label, c.lobes(j),
                           median (x), med ("flip", "pov"), med ("deltae", "pov"), med ("hue", "pov"),
                           w, mats{ok(iw)}, max (x), wf, mats{ok(iwf)},
                           med ("psnr", "rt"), med ("flip", "rt"), med ("deltae", "rt"), med ("hue", "rt"),
-                          median (cr));
+                          median (cr), med ("flip", "heldout"), med ("deltae", "heldout"));
       for q = {"psnr", "flip", "deltae", "hue"}
         sm.methods.(m{1}).(["median_" q{1}])(j) = med (q{1}, "pov");
         sm.methods.(m{1}).(["median_" q{1} "_rt"])(j) = med (q{1}, "rt");
+        sm.methods.(m{1}).(["median_" q{1} "_heldout"])(j) = med (q{1}, "heldout");
       endfor
       sm.methods.(m{1}).worst_psnr(j) = w;
       sm.methods.(m{1}).worst_material{j} = mats{ok(iw)};
@@ -246,61 +282,62 @@ function db_report ()
   L{end+1} = "## PSNR and FLIP";
   L{end+1} = "";
   [L, sm.rank_disagreement] = disagreement (L, P, F, Q, Frt, ok, mats, c, c.fail_flip_drop);
-  rec = "scene";                      # the recommended method
+  rec = "general";                    # the recommended method
   if (any (strcmp (c.methods, rec)))
-    [up, rise] = falls_of (F.(rec), ok, c.fail_flip_drop);
-    [up_rt, rise_rt] = falls_of (Frt.(rec), ok, c.fail_flip_drop);
-    L{end+1} = sprintf (["The recommended fit (%s) renders worse by FLIP with one more lobe (FLIP up by more " ...
-                         "than %g, FAIL_FLIP_DROP) on: %s with POV-Ray; %s with rt_render."], rec, c.fail_flip_drop,
-                        names_rise (mats, up, F.(rec), P.(rec), c.lobes, c.fail_flip_drop),
-                        names_rise (mats, up_rt, Frt.(rec), Q.(rec), c.lobes, c.fail_flip_drop));
-    sm.flip_rises = struct ("method", rec, "pov", {mats(up)}, "rt", {mats(up_rt)});
+    [up, rise] = falls_of (V.(rec), ok, c.fail_flip_drop);
+    [up_p, rise_p] = falls_of (F.(rec), ok, c.fail_flip_drop);
+    L{end+1} = sprintf (["The recommended fit (%s) renders worse with one more lobe (up by more than %g, " ...
+                         "FAIL_FLIP_DROP) by %s on: %s. By in-sample FLIP (POV-Ray, the scene's own light): %s."],
+                        rec, c.fail_flip_drop, X.verdict, names_rise (mats, up, V.(rec), Vp.(rec), c.lobes, c.fail_flip_drop),
+                        names_rise (mats, up_p, F.(rec), P.(rec), c.lobes, c.fail_flip_drop));
+    sm.flip_rises = struct ("method", rec, "verdict", {mats(up)}, "largest_rise", max ([rise; 0]),
+                            "in_sample", {mats(up_p)});
   else
     L{end+1} = sprintf ("The recommended fit (%s) is not among METHODS (%s).", rec, strjoin (c.methods, " "));
-    sm.flip_rises = struct ("method", rec, "pov", {{}}, "rt", {{}});
+    sm.flip_rises = struct ("method", rec, "verdict", {{}}, "largest_rise", NaN, "in_sample", {{}});
   endif
   L{end+1} = "";
 
   ## --- where the Lafortune model fails: by FLIP, PSNR beside it
   L{end+1} = "## Where the Lafortune model fails";
   L{end+1} = "";
-  L{end+1} = sprintf (["A material fails when its best fit (the lowest FLIP of its POV-Ray renders, over the " ...
+  L{end+1} = sprintf (["Judged by %s. A material fails when its best fit (the lowest FLIP, over the " ...
                        "Lafortune model's methods and lobe counts) has FLIP above %g (FAIL_FLIP: the picture looks wrong), or when " ...
                        "the method of that best fit looks wrong with %d lobe%s (FLIP above %g) and going to %d " ...
                        "lobes lowers its FLIP by less than %g (FAIL_FLIP_GAIN: more lobes do not help, as the " ...
                        "paper found by PSNR for red plastic; a material that %d lobe%s already render%s right " ...
                        "does not fail for that). A method falls on a material when one more lobe raises FLIP by " ...
                        "more than %g (FAIL_FLIP_DROP; as the paper's 3-lobe fits did by PSNR)."],
-                      c.fail_flip, min (c.lobes), plural (min (c.lobes)), c.fail_flip, max (c.lobes),
+                      X.verdict, c.fail_flip, min (c.lobes), plural (min (c.lobes)), c.fail_flip, max (c.lobes),
                       c.fail_flip_gain, min (c.lobes), plural (min (c.lobes)),
                       ifelse (min (c.lobes) == 1, "s", ""), c.fail_flip_drop);
   L{end+1} = "";
   fails = {};
   lm = c.methods(strcmp ({mp.model}, "lafortune"));      # the Lafortune model's methods
   for i = ifelse (isempty (lm), [], ok)
-    fb = cellfun (@(m) min (F.(m)(i,:)), lm);
+    fb = cellfun (@(m) min (V.(m)(i,:)), lm);
     [best, b] = min (fb);
     if (! isfinite (best))
       continue;
     endif
     mb = lm{b};
-    [~, jb] = min (F.(mb)(i,:));
-    gain = F.(mb)(i,1) - F.(mb)(i,end);
+    [~, jb] = min (V.(mb)(i,:));
+    gain = V.(mb)(i,1) - V.(mb)(i,end);
     why = {};
     if (best > c.fail_flip)
       why{end+1} = sprintf ("FLIP above %g", c.fail_flip);
     endif
-    if (nk > 1 && F.(mb)(i,1) > c.fail_flip && ! (gain >= c.fail_flip_gain))
+    if (nk > 1 && V.(mb)(i,1) > c.fail_flip && ! (gain >= c.fail_flip_gain))
       why{end+1} = sprintf ("more lobes do not help (FLIP down by less than %g)", c.fail_flip_gain);
     endif
     if (isempty (why))
       continue;
     endif
     fails{end+1} = struct ("material", mats{i}, "reason", strjoin (why, "; "), "method", mb,
-                           "lobes", c.lobes(jb), "flip", best, "flip_rt", Frt.(mb)(i,jb),
-                           "psnr", P.(mb)(i,jb), "best_psnr", max (cellfun (@(m) max (P.(m)(i,:)), lm)),
-                           "flip_first", F.(mb)(i,1), "flip_last", F.(mb)(i,end),
-                           "psnr_first", P.(mb)(i,1), "psnr_last", P.(mb)(i,end));
+                           "lobes", c.lobes(jb), "flip", best, "flip_in_sample", F.(mb)(i,jb),
+                           "psnr", Vp.(mb)(i,jb), "best_psnr", max (cellfun (@(m) max (Vp.(m)(i,:)), lm)),
+                           "flip_first", V.(mb)(i,1), "flip_last", V.(mb)(i,end),
+                           "psnr_first", Vp.(mb)(i,1), "psnr_last", Vp.(mb)(i,end));
   endfor
   if (isempty (lm))
     L{end+1} = sprintf ("The Lafortune model is not among MODELS (%s).", strjoin (c.models, " "));
@@ -309,14 +346,14 @@ function db_report ()
   else
     L{end+1} = sprintf ("%d of the %d processed materials fail:", numel (fails), numel (ok));
     L{end+1} = "";
-    L{end+1} = sprintf (["| material | why | best fit | its FLIP, POV-Ray (rt_render) | its PSNR (dB) | " ...
+    L{end+1} = sprintf (["| material | why | best fit | its FLIP (in-sample, POV-Ray) | its PSNR (dB) | " ...
                          "FLIP, %d to %d lobes | PSNR, %d to %d lobes (dB) | best PSNR, any fit (dB) |"],
                         min (c.lobes), max (c.lobes), min (c.lobes), max (c.lobes));
     L{end+1} = "|---|---|---|---|---|---|---|---|";
     for f = fails
       x = f{1};
       L{end+1} = sprintf ("| %s | %s | %s, %d lobe%s | %.3f (%.3f) | %.2f | %.3f → %.3f | %.2f → %.2f | %.2f |",
-                          x.material, x.reason, x.method, x.lobes, plural (x.lobes), x.flip, x.flip_rt,
+                          x.material, x.reason, x.method, x.lobes, plural (x.lobes), x.flip, x.flip_in_sample,
                           x.psnr, x.flip_first, x.flip_last, x.psnr_first, x.psnr_last, x.best_psnr);
     endfor
   endif
@@ -325,26 +362,26 @@ function db_report ()
   L{end+1} = "Per method:";
   L{end+1} = "";
   for m = c.methods
-    best = min (F.(m{1})(ok,:), [], 2);
-    gain = F.(m{1})(ok,1) - F.(m{1})(ok,end);
+    best = min (V.(m{1})(ok,:), [], 2);
+    gain = V.(m{1})(ok,1) - V.(m{1})(ok,end);
     high = ok(best > c.fail_flip);
     flat = ok(! (gain >= c.fail_flip_gain) & nk > 1);
-    [falls, rise] = falls_of (F.(m{1}), ok, c.fail_flip_drop);
-    [falls_rt, rise_rt] = falls_of (Frt.(m{1}), ok, c.fail_flip_drop);
+    [falls, rise] = falls_of (V.(m{1}), ok, c.fail_flip_drop);
+    [falls_rt, rise_rt] = falls_of (F.(m{1}), ok, c.fail_flip_drop);
     L{end+1} = sprintf (["- %s: best FLIP above %g: %s; more lobes do not help (FLIP down by less than %g): " ...
-                         "%s; more lobes render worse: %s (POV-Ray), %s (rt_render)."],
+                         "%s; more lobes render worse: %s (in-sample, POV-Ray: %s)."],
                         repro_method (m{1}).label, c.fail_flip,
-                        names_val (mats, high, min (F.(m{1})(high,:), [], 2), "FLIP %.3f"), c.fail_flip_gain,
-                        names_val (mats, flat, F.(m{1})(flat,end) - F.(m{1})(flat,1),
+                        names_val (mats, high, min (V.(m{1})(high,:), [], 2), "FLIP %.3f"), c.fail_flip_gain,
+                        names_val (mats, flat, V.(m{1})(flat,end) - V.(m{1})(flat,1),
                                    sprintf ("FLIP %%+.3f from %d to %d lobes", min (c.lobes), max (c.lobes))),
-                        names_rise (mats, falls, F.(m{1}), P.(m{1}), c.lobes, c.fail_flip_drop),
-                        names_rise (mats, falls_rt, Frt.(m{1}), Q.(m{1}), c.lobes, c.fail_flip_drop));
+                        names_rise (mats, falls, V.(m{1}), Vp.(m{1}), c.lobes, c.fail_flip_drop),
+                        names_rise (mats, falls_rt, F.(m{1}), P.(m{1}), c.lobes, c.fail_flip_drop));
     sm.methods.(m{1}).fails_high = mats(high);
     sm.methods.(m{1}).fails_flat = mats(flat);
     sm.methods.(m{1}).falls = mats(falls);
     sm.methods.(m{1}).largest_flip_rise = max ([rise; 0]);
-    sm.methods.(m{1}).falls_rt = mats(falls_rt);
-    sm.methods.(m{1}).largest_flip_rise_rt = max ([rise_rt; 0]);
+    sm.methods.(m{1}).falls_in_sample = mats(falls_rt);
+    sm.methods.(m{1}).largest_flip_rise_in_sample = max ([rise_rt; 0]);
   endfor
   bad = find (! [D.ok]);
   L{end+1} = "";
@@ -361,7 +398,7 @@ function db_report ()
   L{end+1} = "";
 
   ## --- the models compared (MODELS)
-  [L, sm.models] = db_models (L, c, D, ok, mats, X);
+  [L, sm.models] = db_models (L, c, D, ok, mats, X);      # on X.*.verdict
 
   L{end+1} = "## Every material";
   L{end+1} = "";
@@ -413,24 +450,28 @@ function db_report ()
   sm.deltae_rt = X.deltae.rt;
   sm.hue = X.hue.pov;
   sm.hue_rt = X.hue.rt;
+  sm.verdict = X.verdict;
+  sm.heldout = struct ("lights", {{c.judge.label}}, "flip", X.flip.heldout, "deltae", X.deltae.heldout,
+                       "psnr", X.psnr.heldout, "hue", X.hue.heldout);
   sm.settings = struct ("scene", scene.name, "width", scene.width, "height", scene.height,
                         "spp", scene.spp, "pov_antialias", c.pov_aa, "max_angle", c.max_angle,
                         "lobes", c.lobes, "methods", {c.methods}, "models", {c.models},
                         "metals", {c.metals}, "quick", c.quick,
                         "fail_flip", c.fail_flip, "fail_flip_gain", c.fail_flip_gain,
-                        "fail_flip_drop", c.fail_flip_drop);
+                        "fail_flip_drop", c.fail_flip_drop, "judge", {{c.judge.name}},
+                        "judge_samples", c.judge_samples, "judge_spp", c.judge_spp);
   repro_save (repro_files ("summary", c.results, ""), sm);
-  write_gallery (c, D, P, F, X.deltae.pov);
+  write_gallery (c, D, P, F, X.deltae.pov, X.flip.heldout);
   printf ("database: %d materials (%d failed): %s\n", numel (mats), numel (bad),
           repro_files ("report", c.results, ""));
 endfunction
 
 ## The baseline: the published 1-lobe fits (PUBLISHED, rendered by
-## repro_render_fits as the method ngan2005) against the recommended
-## method's 1-lobe fit, by FLIP and PSNR with both renderers
+## repro_render_fits and judged by repro_judge as the method ngan2005)
+## against the recommended method's 1-lobe fit, on the verdicts' measure
 function [L, S] = published_section (L, D, ok, mats, X, c)
-  S = struct ("materials", {{}}, "flip_pov", [], "flip_rt", [], "psnr_pov", [], "psnr_rt", [],
-              "deltae_pov", [], "hue_pov", [], "scene_flip_pov", [], "scene_flip_rt", []);
+  S = struct ("materials", {{}}, "flip", [], "psnr", [], "deltae", [], "hue", [], "flip_in_sample", [],
+              "recommended_flip", []);
   has = ok(arrayfun (@(i) isfield (D(i).rec.render_fits, "ngan2005"), ok));
   L{end+1} = "## The published fit";
   L{end+1} = "";
@@ -440,46 +481,51 @@ function [L, S] = published_section (L, D, ok, mats, X, c)
     L{end+1} = "";
     return;
   endif
-  for i = has
-    r = D(i).rec.render_fits.ngan2005(1);
-    S.materials{end+1} = mats{i};
-    for f = {"flip_pov", "flip_rt", "psnr_pov", "psnr_rt", "deltae_pov", "hue_pov"}
-      S.(f{1})(end+1) = r.(f{1});
-    endfor
+  S.materials = mats(has);
+  for q = {"flip", "psnr", "deltae", "hue"}
+    S.(q{1}) = X.(q{1}).verdict.ngan2005(has,1)';
   endfor
+  S.flip_in_sample = X.flip.pov.ngan2005(has,1)';
   L{end+1} = sprintf (["Ngan, Durand and Matusik (2005) published 1-lobe Lafortune fits (direction and exponent " ...
                        "shared by R, G, B) of %d of these materials (`%s`); each is rendered like the toolbox's " ...
                        "fits (row `ngan2005` of `table.csv`). Theirs were fitted to the real measurements, the " ...
-                       "toolbox's to the very data they are compared with here."], numel (has), c.published);
-  rec = "scene";
+                       "toolbox's to the very data they are compared with here. Judged by %s."], numel (has),
+                      c.published, X.verdict);
+  rec = "general";
   j1 = find (c.lobes == 1, 1);
   if (any (strcmp (c.methods, rec)) && ! isempty (j1))
-    S.scene_flip_pov = X.flip.pov.(rec)(has,j1)';
-    S.scene_flip_rt = X.flip.rt.(rec)(has,j1)';
-    win = S.scene_flip_pov < S.flip_pov;
-    win_rt = S.scene_flip_rt < S.flip_rt;
+    S.recommended_flip = X.flip.verdict.(rec)(has,j1)';
+    win = S.recommended_flip < S.flip;
     L{end+1} = "";
-    L{end+1} = sprintf (["By FLIP the recommended 1-lobe fit (%s) is better than the published one on %d of %d " ...
-                         "materials with POV-Ray and %d of %d with rt_render%s. Medians: FLIP %.3f (published) " ...
-                         "against %.3f; PSNR %.2f dB against %.2f dB."], rec, sum (win), numel (has),
-                        sum (win_rt), numel (has),
-                        ifelse (all (win & win_rt), "", sprintf (" (not on: %s)", strjoin (mats(has(! (win & win_rt))), ", "))),
-                        median (S.flip_pov), median (S.scene_flip_pov), median (S.psnr_pov),
-                        median (X.psnr.pov.(rec)(has,j1)));
+    L{end+1} = sprintf (["The recommended 1-lobe fit (%s) is better than the published one on %d of %d " ...
+                         "materials%s. Medians: FLIP %.3f (published) against %.3f; PSNR %.2f dB against %.2f dB."],
+                        rec, sum (win), numel (has),
+                        ifelse (all (win), "", sprintf (" (not on: %s)", strjoin (mats(has(! win)), ", "))),
+                        median (S.flip), median (S.recommended_flip), median (S.psnr),
+                        median (X.psnr.verdict.(rec)(has,j1)));
   endif
   L{end+1} = "";
-  L{end+1} = "| material | published: PSNR (dB) | FLIP | ΔE | hue (°) | recommended 1 lobe: PSNR (dB) | FLIP |";
-  L{end+1} = "|---|---|---|---|---|---|---|";
+  L{end+1} = "| material | published: PSNR (dB) | FLIP | ΔE | hue (°) | in-sample FLIP | recommended 1 lobe: PSNR (dB) | FLIP |";
+  L{end+1} = "|---|---|---|---|---|---|---|---|";
   for n = 1:numel (has)
     i = has(n);
     sp = NaN; sf = NaN;
-    if (! isempty (S.scene_flip_pov))
-      sp = X.psnr.pov.(rec)(i,j1); sf = S.scene_flip_pov(n);
+    if (! isempty (S.recommended_flip))
+      sp = X.psnr.verdict.(rec)(i,j1); sf = S.recommended_flip(n);
     endif
-    L{end+1} = sprintf ("| %s | %.2f | %.3f | %.2f | %.1f | %.2f | %.3f |", mats{i}, S.psnr_pov(n), S.flip_pov(n),
-                        S.deltae_pov(n), S.hue_pov(n), sp, sf);
+    L{end+1} = sprintf ("| %s | %.2f | %.3f | %.2f | %.1f | %.3f | %.2f | %.3f |", mats{i}, S.psnr(n), S.flip(n),
+                        S.deltae(n), S.hue(n), S.flip_in_sample(n), sp, sf);
   endfor
   L{end+1} = "";
+endfunction
+
+## the held-out cells of table.csv of method M's fit at lobe slot J of
+## material I: mean FLIP, dE, PSNR, hue over the NJ lights, then each
+## light's FLIP ("" without held-out lights or record)
+function v = heldout_cells (X, m, i, j, nj)
+  v = {X.flip.heldout.(m)(i,j), X.deltae.heldout.(m)(i,j), X.psnr.heldout.(m)(i,j), X.hue.heldout.(m)(i,j)};
+  v = [v, num2cell(reshape (X.flip.light.(m)(i,j,:), 1, nj))];
+  v(cellfun (@(x) isnan (x), v)) = {""};
 endfunction
 
 ## R.(F)(K), "" when the record lacks it
@@ -739,7 +785,7 @@ function ly = spread (y, gap, yl)
   ly(o) = ys;
 endfunction
 
-function write_gallery (c, D, P, F, E)
+function write_gallery (c, D, P, F, E, H0)
   H = {"<!DOCTYPE html>", "<html><head><meta charset=\"utf-8\"><title>lafortune: contact sheets</title>", ...
        "<style>body{font-family:sans-serif} img{max-width:100%} .err{color:#a00}</style></head><body>", ...
        "<h1>Measured render and Lafortune fits, per material</h1>", "<ul>"};
@@ -756,12 +802,17 @@ function write_gallery (c, D, P, F, E)
       continue;
     endif
     for m = c.methods
-      H{end+1} = sprintf ("<p>%s, %s lobes: PSNR %s dB; FLIP %s; &Delta;E %s</p>", repro_method (m{1}).label,
+      H{end+1} = sprintf (["<p>%s, %s lobes: in-sample (POV-Ray, the scene's light): PSNR %s dB; FLIP %s; " ...
+                           "&Delta;E %s; <b>held out</b>: FLIP %s</p>"], repro_method (m{1}).label,
                           lobes, lobes_txt (P.(m{1})(i,:)), lobes_txt (F.(m{1})(i,:), "%.3f"),
-                          lobes_txt (E.(m{1})(i,:)));
+                          lobes_txt (E.(m{1})(i,:)), lobes_txt (H0.(m{1})(i,:), "%.3f"));
     endfor
     H{end+1} = sprintf ("<img src=\"../%s/%s\" alt=\"%s\">", repro_files ("db_material", "", D(i).material),
                         D(i).rec.sheet.file, D(i).material);
+    if (isfield (D(i).rec.sheet, "heldout_file") && ! isempty (D(i).rec.sheet.heldout_file))
+      H{end+1} = sprintf ("<img src=\"../%s/%s\" alt=\"%s, held out\">", repro_files ("db_material", "", D(i).material),
+                          D(i).rec.sheet.heldout_file, D(i).material);
+    endif
   endfor
   H{end+1} = "</body></html>";
   repro_save (repro_files ("gallery", c.results, ""), [strjoin(H, "\n") "\n"]);

@@ -6,33 +6,65 @@
 ## Gallery step of `make database` (run by repro_step, which writes @var{R}
 ## to RESULTS/sheet/MATERIAL.json): the material's contact sheet
 ## RESULTS/sheet/MATERIAL.png, one row per fit method (in-plane: the
-## paper's, hemisphere, scene: the recommended), the measured data rendered
+## paper's, general: the recommended, scene, hemisphere), the measured data rendered
 ## by POV-Ray (the reference of the fits' PSNR) first and then the render
 ## of each lobe count, titled "METHOD K: PSNR, FLIP, dE" (the POV-Ray
 ## render's PSNR, HDR-FLIP and mean CIEDE2000 against the measured one, as
 ## in the record of repro_render_fits), all at the measured render's
 ## exposure; in make database a last row has the published fit
-## (repro_render_fits's ngan2005) when it was rendered.  @var{R}: @code{file} (the PNG's name, relative to RESULTS)
-## and @code{exposure} (stops).
+## (repro_render_fits's ngan2005) when it was rendered.  These renders
+## are in the light the scene fits were made for: in-sample, which the
+## sheet's title says.  With held-out lights (JUDGE), a second sheet
+## RESULTS/sheet/MATERIAL-heldout.png shows the same fits rendered by
+## rt_render under JUDGE's first light (repro_judge), titled with the
+## held-out FLIP, PSNR and dE under that light.  @var{R}: @code{file}
+## (the PNG's name, relative to RESULTS), @code{exposure} (stops),
+## @code{heldout_file} ("" without held-out lights) and
+## @code{heldout_light}.
 ## @end deftypefn
 function R = db_sheet (material)
   c = repro_config ();
   warning ("off", "Octave:gnuplot-graphics");
   graphics_toolkit ("gnuplot");
-  ref = exrread ([repro_files("measured_pov", c.results, material) ".exr"]);   # the fits' renderer: their PSNR's reference
   fits = jsondecode (fileread (repro_files ("render_fits", c.results, material)));
+  judge = jsondecode (fileread (repro_files ("judge", c.results, material)));
+  ## the fits' renderer's measured render: their PSNR's reference
+  ref = exrread ([repro_files("measured_pov", c.results, material) ".exr"]);
+  get = @(mth, k) exrread ([repro_files("fit_render", c.results, material, mth, k) ".exr"]);
+  stops = sheet (c, material, fits, ref, get, {"psnr_pov", "flip_pov", "deltae_pov"}, 1,
+                 sprintf ("%s: in the light the scene fits were made for (in-sample), POV-Ray", material),
+                 repro_files ("sheet_png", c.results, material));
+  R = struct ("file", repro_files ("sheet_png", "", material), "exposure", stops,
+              "heldout_file", "", "heldout_light", "");
+  if (! isempty (judge.lights))
+    light = judge.lights(1).label;
+    ref = exrread ([repro_files("judge_measured", c.results, material) ".exr"]);
+    get = @(mth, k) exrread ([repro_files("judge_render", c.results, material, mth, k) ".exr"]);
+    sheet (c, material, judge, ref, get, {"psnr", "flip", "deltae"}, 1,
+           sprintf ("%s: held out, under %s (no fit was made for it), rt_render", material, light),
+           repro_files ("sheet_heldout_png", c.results, material));
+    R.heldout_file = repro_files ("sheet_heldout_png", "", material);
+    R.heldout_light = light;
+  endif
+endfunction
+
+## One contact sheet into FILE: the measured render REF first in each row,
+## then each method's fits GET (method, k), titled with the record REC's
+## measures Q (PSNR, FLIP, dE; at position L of a per-light row) and the
+## sheet's heading TTL; returns the exposure (stops)
+function stops = sheet (c, material, rec, ref, get, Q, l, ttl, file)
   [rgb, stops] = img_tonemap (ref, "auto");
   ## the methods' rows, and the published fit's (one lobe) when it was rendered
   rows_ = c.methods;
   lobes = repmat ({c.lobes}, 1, numel (rows_));
-  if (isfield (fits, "ngan2005"))
+  if (isfield (rec, "ngan2005"))
     rows_{end+1} = "ngan2005";
     lobes{end+1} = 1;
   endif
   nm = numel (rows_);
   nk = numel (c.lobes);
   label = struct ("inplane", "in-plane", "hemisphere", "hemisphere", "scene", "scene",
-                  "ngan2005", "Ngan 2005");
+                  "general", "general", "ngan2005", "Ngan 2005");
   names = rows_;
   for i = 1:nm
     if (isfield (label, rows_{i}))
@@ -45,9 +77,13 @@ function R = db_sheet (material)
   pw = max (256, ceil (5.9 * (max (cellfun (@numel, names)) + 33)));
   ph = round (pw * c.size(1) / c.size(2));
   tt = 36;
+  hh = 30;                               # the sheet's heading
   W = pw * (1 + nk);
-  H = (ph + tt) * nm;
+  H = (ph + tt) * nm + hh;
   h = figure ("visible", "off", "position", [0, 0, W, H]);
+  annotation ("textbox", [0, 1 - hh / H, 1, hh / H], "string", ttl, "edgecolor", "none",
+              "horizontalalignment", "center", "verticalalignment", "middle", "fontsize", 11,
+              "fontweight", "bold", "interpreter", "none");
   for i = 1:nm
     mth = rows_{i};
     name = names{i};
@@ -57,24 +93,22 @@ function R = db_sheet (material)
       if (j == 0)
         show (rgb, "measured");
       else
-        img = exrread ([repro_files("fit_render", c.results, material, mth, lobes{i}(j)) ".exr"]);
-        r = fits.(mth)(j);
+        img = get (mth, lobes{i}(j));
+        r = rec.(mth)(j);
         show (img_tonemap (img, stops), sprintf ("%s %d: %.1f dB, FLIP %.3f, dE %.1f", name, lobes{i}(j),
-                                                  num (r, "psnr_pov"), num (r, "flip_pov"),
-                                                  num (r, "deltae_pov")), 8, "normal");
+                                                  num (r, Q{1}, l), num (r, Q{2}, l),
+                                                  num (r, Q{3}, l)), 8, "normal");
       endif
     endfor
   endfor
-  file = repro_files ("sheet_png", c.results, material);   # repro_print makes the folder
-  repro_print (h, file, 72, "db_sheet");
-  R = struct ("file", repro_files ("sheet_png", "", material), "exposure", stops);
+  repro_print (h, file, 72, "db_sheet");  # makes the folder
 endfunction
 
-## the number R.(F), NaN when the record lacks it or holds null (NaN, Inf)
-function x = num (r, f)
+## the number R.(F)(L), NaN when the record lacks it or holds null (NaN, Inf)
+function x = num (r, f, l)
   x = NaN;
-  if (isfield (r, f) && isnumeric (r.(f)) && isscalar (r.(f)))
-    x = r.(f);
+  if (isfield (r, f) && isnumeric (r.(f)) && numel (r.(f)) >= l)
+    x = r.(f)(l);
   endif
 endfunction
 

@@ -68,6 +68,9 @@ function c = repro_config (file)
   c.study_light = number (get ("STUDY_LIGHT"), "STUDY_LIGHT");
   c.study_table_spp = number (get ("STUDY_TABLE_SPP"), "STUDY_TABLE_SPP");
   c.published = strtrim (get ("PUBLISHED"));
+  c.judge = judge_lights (words (get ("JUDGE")));
+  c.judge_samples = number (get ("JUDGE_SAMPLES"), "JUDGE_SAMPLES");
+  c.judge_spp = number (get ("JUDGE_SPP"), "JUDGE_SPP");
   c.fail_flip = number (get ("FAIL_FLIP"), "FAIL_FLIP");
   c.fail_flip_gain = number (get ("FAIL_FLIP_GAIN"), "FAIL_FLIP_GAIN");
   c.fail_flip_drop = number (get ("FAIL_FLIP_DROP"), "FAIL_FLIP_DROP");
@@ -93,9 +96,36 @@ function v = read_config (file)
   endfor
 endfunction
 
+## the held-out lights of JUDGE: struct array with name (the word), label,
+## type ("environment", "directional"), map (its name) and direction
+function J = judge_lights (w)
+  J = struct ("name", {}, "label", {}, "type", {}, "map", {}, "direction", {});
+  for i = 1:numel (w)
+    if (any (w{i} == ","))
+      d = str2double (strsplit (w{i}, ","));
+      if (numel (d) != 3 || any (! isfinite (d)) || norm (d) == 0)
+        error ("lafortune:badConfig",
+               "repro_config: JUDGE has '%s': expected a light probe's name or a direction X,Y,Z", w{i});
+      endif
+      J(end+1) = struct ("name", w{i}, "label", sprintf ("light from [%s]", strjoin (strsplit (w{i}, ","), " ")),
+                         "type", "directional", "map", "", "direction", d / norm (d));
+    elseif (! isempty (regexp (w{i}, '^[a-z][a-z0-9_-]*$', "once")))
+      J(end+1) = struct ("name", w{i}, "label", w{i}, "type", "environment", "map", w{i}, "direction", []);
+    else
+      error ("lafortune:badConfig",
+             "repro_config: JUDGE has '%s': expected a light probe's name or a direction X,Y,Z", w{i});
+    endif
+  endfor
+endfunction
+
 function x = setting (v, name, quick)
   x = getenv (name);
   if (! isempty (x))
+    return;
+  endif
+  ## set empty on make's command line (the Makefile lists those names:
+  ## getenv cannot tell an empty variable from a missing one)
+  if (any (strcmp (name, strsplit (getenv ("LAFORTUNE_EMPTY")))))
     return;
   endif
   qname = [name "_QUICK"];

@@ -11,8 +11,11 @@
 ## data at theta_i = 30 degrees and the 1-, 2-, 3-lobe in-plane fits;
 ## @item renders-MATERIAL.png (plot_renders; Fig. 4 and 5): the measured
 ## render and the POV-Ray renders of the fits, one row per method of
-## METHODS (in-plane: the paper's method, with the paper's PSNR; hemisphere;
-## scene: the recommended fit), with FLIP-map insets, PSNR and FLIP;
+## METHODS (in-plane: the paper's method, with the paper's PSNR; general:
+## the recommended fit; scene: the fit for this very light, so in-sample),
+## with FLIP-map insets, PSNR and FLIP;
+## @item heldout-MATERIAL.png: the same under JUDGE's first light, which no
+## fit was made for (repro_judge's rt_render renders);
 ## @item polar-MATERIAL.png (plot_polar): data and the 3-lobe in-plane fit
 ## in the plane of incidence at theta_i = 15, 30, 45, 60 degrees (log radius:
 ## the grazing lobes would hide the others);
@@ -58,27 +61,25 @@ function repro_figures ()
                       "file", repro_files ("fig_polar", c.results, mat)));
     done (plot_slice ([{b}, models], 90, "names", [{"measured"}, strcat(lobe_names, " fit")],
                       "file", repro_files ("fig_slice", c.results, mat)));
-    ## Fig. 4 / 5: in-plane fits (the paper's method) and hemisphere fits
+    ## Fig. 4 / 5: every method's fits in the scene (in-sample for the
+    ## scene fit), by POV-Ray, and under JUDGE's first light (held out), by
+    ## rt_render
     ref = exrread ([repro_files("measured_pov", c.results, mat) ".exr"]);   # the fits' renderer and samples
     F = jsondecode (fileread (repro_files ("render_fits", c.results, mat)));
-    mths = c.methods;
-    nm = numel (mths);
-    imgs = repmat ({ref}, nm, 1);
-    psnr = zeros (nm, nl);
-    for r = 1:nm
-      for j = 1:nl
-        imgs{r,j+1} = exrread ([repro_files("fit_render", c.results, mat, mths{r}, c.lobes(j)) ".exr"]);
-        psnr(r,j) = F.(mths{r})(j).psnr_pov;
-      endfor
-    endfor
-    paper = NaN (nm, nl);
-    paper(strcmp (mths, "inplane"),:) = repro_paper (c, mat);
-    done (plot_renders (imgs, [{"measured"}, lobe_names], psnr, "paper", paper, "map", "flip",
-                        "rows", cellfun (@row_name, mths, "uniformoutput", false),
-                        "width", min (256, max (180, columns (ref))),   # the paper's 256: 1:1
-                        "title", sprintf ("%s: POV-Ray, %d x %d, anti-aliasing %d x %d",
-                                          mat, columns (ref), rows (ref), c.pov_aa, c.pov_aa),
-                        "file", repro_files ("fig_renders", c.results, mat)));
+    renders_figure (c, mat, ref, @(m, k) repro_files ("fit_render", c.results, mat, m, k),
+                    @(m, j) F.(m)(j).psnr_pov,
+                    sprintf ("%s: POV-Ray, %d x %d, anti-aliasing %d x %d (the scene fit's own light: in-sample)",
+                             mat, columns (ref), rows (ref), c.pov_aa, c.pov_aa),
+                    repro_files ("fig_renders", c.results, mat), true);
+    J = jsondecode (fileread (repro_files ("judge", c.results, mat)));
+    if (! isempty (J.lights))
+      ref = exrread ([repro_files("judge_measured", c.results, mat) ".exr"]);
+      renders_figure (c, mat, ref, @(m, k) repro_files ("judge_render", c.results, mat, m, k),
+                      @(m, j) J.(m)(j).psnr(1),
+                      sprintf ("%s: held out, under %s (no fit was made for it), rt_render",
+                               mat, J.lights(1).label),
+                      repro_files ("fig_heldout", c.results, mat), false);
+    endif
     Fi = jsondecode (fileread (repro_files ("fit", c.results, mat)));
     ## the step's record: trace(ch).time, .rmse per channel
     tr = Fi.inplane.trace;
@@ -134,6 +135,34 @@ function study_figure (c, mat, file, q)
 endfunction
 
 ## a row of the renders' figure: its method's label (repro_method)
+## The measured render REF and every method's fits (FILE (method, k), an
+## EXR without its extension; PSNR (method, j)) in one figure with FLIP
+## maps, titled TTL, into OUT (plot_renders); the paper's PSNR beside the
+## in-plane row when PAPER (its scene, not a held-out light)
+function renders_figure (c, mat, ref, file, psnr, ttl, out, paper_on)
+  mths = c.methods;
+  nm = numel (mths);
+  nl = numel (c.lobes);
+  imgs = repmat ({ref}, nm, 1);
+  P = zeros (nm, nl);
+  for r = 1:nm
+    for j = 1:nl
+      imgs{r,j+1} = exrread ([file(mths{r}, c.lobes(j)) ".exr"]);
+      P(r,j) = psnr (mths{r}, j);
+    endfor
+  endfor
+  paper = NaN (nm, nl);
+  if (paper_on)
+    paper(strcmp (mths, "inplane"),:) = repro_paper (c, mat);
+  endif
+  names = arrayfun (@(k) sprintf ("%d lobe%s", k, ifelse (k > 1, "s", "")), c.lobes,
+                    "uniformoutput", false);
+  done (plot_renders (imgs, [{"measured"}, names], P, "paper", paper, "map", "flip",
+                      "rows", cellfun (@row_name, mths, "uniformoutput", false),
+                      "width", min (256, max (180, columns (ref))),   # the paper's 256: 1:1
+                      "title", ttl, "file", out));
+endfunction
+
 function s = row_name (m)
   s = repro_method (m).label;
 endfunction

@@ -41,6 +41,7 @@ function out = repro_files (kind, root, material, method, k)
       "fit", "fit/%.json",
       "render_measured", "render/%-measured.json",
       "render_fits", "render/%-fits.json",
+      "judge", "judge/%.json",
       "spp", "spp/%.json",
       "study", "study/%.json",
       "sheet", "sheet/%.json",
@@ -49,13 +50,17 @@ function out = repro_files (kind, root, material, method, k)
       "measured", "render/%-measured",            # rt_render: .exr, .png
       "measured_pov", "render/%-measured-pov",    # POV-Ray: .exr
       "fit_render", "render/%-@M-@K",             # POV-Ray: .exr, .png
+      "judge_measured", "judge/%-measured",        # rt_render under JUDGE's first light: .exr
+      "judge_render", "judge/%-@M-@K",            # the fits there: .exr
       "sheet_png", "sheet/%.png",
+      "sheet_heldout_png", "sheet/%-heldout.png",
       ## figures of make reproduce (figures: the last one written, the target)
       "figures", "figures/spp.png",
       "fig_plane", "figures/plane-%.png",
       "fig_polar", "figures/polar-%.png",
       "fig_slice", "figures/slice-%.png",
       "fig_renders", "figures/renders-%.png",
+      "fig_heldout", "figures/heldout-%.png",
       "fig_trace", "figures/fit-trace.png",
       "fig_env", "figures/env-samples.png",
       "fig_study", "figures/study-%.png",
@@ -70,14 +75,14 @@ function out = repro_files (kind, root, material, method, k)
       "gallery", "gallery/index.html",
       "fig_psnr_lobes", "figures/psnr-lobes.png",
       "fig_flip_lobes", "figures/flip-lobes.png");
-    steps = struct ("name", {"fit", "render_measured", "render_fits", "spp", "study", "sheet"},
+    steps = struct ("name", {"fit", "render_measured", "render_fits", "judge", "spp", "study", "sheet"},
                     "script", {"repro_fit", "repro_render_measured", "repro_render_fits", ...
-                               "repro_spp", "repro_study", "db_sheet"},
-                    "up", {{}, {}, {"fit", "render_measured"}, {"render_measured"}, ...
+                               "repro_judge", "repro_spp", "repro_study", "db_sheet"},
+                    "up", {{}, {}, {"fit", "render_measured"}, {"fit"}, {"render_measured"}, ...
                            {"render_measured", "render_fits"}, ...
-                           {"fit", "render_measured", "render_fits"}},
-                    "reproduce", {true, true, true, true, true, false},
-                    "database", {true, true, true, false, false, true});
+                           {"fit", "render_measured", "render_fits", "judge"}},
+                    "reproduce", {true, true, true, true, true, true, false},
+                    "database", {true, true, true, true, false, false, true});
     F = struct ("files", files, "steps", steps,
                 "jobs", {{"repro_settings", "repro_data", "repro_figures", "repro_report", ...
                           "db_report"}});

@@ -69,6 +69,13 @@ function R = repro_fit (material)
     r = struct ("model", p.model, "samples", rows (St.wi), "weight", info.weight, "color", info.color,
                 "time", info.time, "iterations", info.iterations, "converged", info.converged,
                 "lobe_time", info.lobe_time);
+    if (isfield (info, "selection"))
+      ## the general fit's choice: each candidate weighting's FLIP in the
+      ## training views, and the weighting and lobe count kept per k
+      s = info.selection;
+      r.selection = struct ("weights", {s.weights}, "flip", s.flip, "chosen", {s.weights(s.chosen)},
+                            "lobes", s.lobes, "views", s.views, "time", s.time);
+    endif
     for k = c.lobes
       m = models{k};
       m.name = sprintf ("%s, %d lobe(s), %s fit", material, k, mth);

@@ -16,7 +16,9 @@
 ## @code{hemisphere}, @code{scene}: see repro_table), @code{color}
 ## (@code{shared}, @code{separate}, or empty: the fit's default),
 ## @code{model} (the type for brdf_fit; @code{lafortune} when the name has
-## none), @code{base} (the name without its model: the method whose table
+## none), @code{weight} (the fit's weighting, empty for the table's
+## default: a @code{hemisphere} method fits plain solid-angle weights,
+## @code{general} the weighting its views choose), @code{base} (the name without its model: the method whose table
 ## and options it fits, and the key of the errors on that table in the fit
 ## record), @code{opts} (the fit's options for the colour mode) and
 ## @code{label}, the method's name in the reports and figures (the three
@@ -54,12 +56,16 @@ function out = repro_method (name, models)
     error ("lafortune:badConfig", "repro_method: a method must be a name, got %s", class (name));
   endif
   parts = strsplit (name, "_");
-  p = struct ("name", name, "table", parts{1}, "color", "", "model", "lafortune", "base", name,
-              "opts", {{}});
+  p = struct ("name", name, "table", parts{1}, "color", "", "model", "lafortune", "weight", "",
+              "base", name, "opts", {{}});
+  if (strcmp (p.table, "hemisphere"))
+    p.weight = "plain";                 # the solid-angle baseline (0.6's method)
+    p.opts = {"weight", "plain"};
+  endif
   rest = parts(2:end);
   if (! isempty (rest) && any (strcmp (rest{1}, {"shared", "separate"})))
     p.color = rest{1};
-    p.opts = {"color", rest{1}};
+    p.opts = [p.opts, {"color", rest{1}}];
     rest(1) = [];
   endif
   if (numel (rest) == 1 && ! isempty (rest{1}) && ! strcmp (rest{1}, "lafortune"))
@@ -68,7 +74,7 @@ function out = repro_method (name, models)
   elseif (! isempty (rest))
     error ("lafortune:badConfig",
            ["repro_method: unknown method '%s': expected TABLE[_COLOR][_MODEL], a table " ...
-            "(inplane, hemisphere, scene), optionally _shared or _separate, optionally a model " ...
+            "(inplane, hemisphere, general, scene), optionally _shared or _separate, optionally a model " ...
             "type other than lafortune (a method without one fits the Lafortune model)"], name);
   endif
   p.label = method_label (p);
@@ -76,9 +82,10 @@ function out = repro_method (name, models)
 endfunction
 
 function s = method_label (p)
-  names = struct ("inplane", "in-plane", "hemisphere", "hemisphere", "scene", "scene");
+  names = struct ("inplane", "in-plane", "hemisphere", "hemisphere", "scene", "scene",
+                  "general", "general");
   notes = struct ("inplane", " (the paper's method)", "hemisphere", " (solid-angle weights)",
-                  "scene", " (recommended)");
+                  "scene", " (for the scene's light)", "general", " (recommended)");
   s = p.table;
   if (isfield (names, s))
     s = names.(s);

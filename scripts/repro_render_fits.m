@@ -34,18 +34,7 @@ function R = repro_render_fits (material)
   ref = exrread ([repro_files("measured", c.results, material) ".exr"]);         # rt_render
   refpov = exrread ([repro_files("measured_pov", c.results, material) ".exr"]);  # POV-Ray
   R = struct ("material", material, "antialias", c.pov_aa);
-  models = struct ();
-  for method = c.methods
-    for k = c.lobes
-      models.(method{1}){k} = lafortune_import ([repro_files("model", c.results, material, method{1}, k) ".json"]);
-    endfor
-  endfor
-  ## the published fit of the material (make database, PUBLISHED), as a
-  ## method of its own with one lobe
-  pub = published (c, material);
-  if (! isempty (pub))
-    models.ngan2005 = {pub};
-  endif
+  models = repro_fits (c, material);   # METHODS x LOBES, and the published fit
   cache = [];         # rt_render's trace, made by the first fit's render, shaded by the rest
   for method = fieldnames (models)'
     mth = method{1};
@@ -78,17 +67,3 @@ function R = repro_render_fits (material)
   endfor
 endfunction
 
-## the published 1-lobe fit of MATERIAL from the table PUBLISHED, in make
-## database (else [], also when the table has no such material or is absent)
-function m = published (c, material)
-  m = [];
-  if (! c.database || isempty (c.published))
-    return;
-  endif
-  if (! exist (c.published, "file"))
-    printf ("reproduce: [%s] no table of published fits at %s (PUBLISHED): no baseline row\n",
-            material, c.published);
-    return;
-  endif
-  m = lafortune_ngan (c.published, material);
-endfunction

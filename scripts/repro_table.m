@@ -9,7 +9,9 @@
 ## colour mode and model change the fit, not the table):
 ## @code{inplane}, the paper's plane of incidence; @code{hemisphere}, every
 ## valid bin with its solid-angle weight (at most @var{max_samples}, Inf
-## for all); @code{scene}, the angle pairs the scene's pixels see
+## for all); @code{general}, the same with merl_samples' training views
+## (the table of the general fit, which chooses its weighting by them);
+## @code{scene}, the angle pairs the scene's pixels see
 ## (@code{merl_scene} of repro_scene's scene at STUDY_TABLE_SPP samples per
 ## pixel, with the whole hemisphere as a weak prior).  Grazing angles
 ## beyond MAX_ANGLE are left out of the first two.  The fit's options are
@@ -22,6 +24,8 @@ function S = repro_table (b, name, c, max_samples = Inf)
     case "inplane"
       S = merl_plane (b, "max_angle", c.max_angle);
     case "hemisphere"
+      S = merl_samples (b, "max_angle", c.max_angle, "max_samples", max_samples, "views", false);
+    case "general"
       S = merl_samples (b, "max_angle", c.max_angle, "max_samples", max_samples);
     case "scene"
       ts = repro_scene (c);
@@ -29,6 +33,6 @@ function S = repro_table (b, name, c, max_samples = Inf)
       S = merl_scene (b, ts);
     otherwise
       error ("lafortune:badConfig",
-             "repro_table: unknown table '%s': expected inplane, hemisphere or scene", p.table);
+             "repro_table: unknown table '%s': expected inplane, hemisphere, general or scene", p.table);
   endswitch
 endfunction

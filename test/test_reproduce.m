@@ -42,12 +42,18 @@
 %!   endif
 %!   assert (! isempty (strfind (rep, "| green-metallic-paint | 2 | 31.44 dB |")));
 %!   assert (! isempty (strfind (rep, "## The fits as a viewer sees them: FLIP and colour difference")));
-%!   assert (! isempty (regexp (rep, "\\| red-plastic \\| scene \\(recommended\\) \\| 3 \\| [0-9.]+ / [0-9.]+ \\| 0\\.[0-9]{4} / 0\\.[0-9]{4} \\|")));
+%!   assert (! isempty (regexp (rep, "\\| red-plastic \\| scene \\(for the scene's light\\) \\| 3 \\| [0-9.]+ / [0-9.]+ \\| 0\\.[0-9]{4} / 0\\.[0-9]{4} \\|")));
+%!   ## held-out verdicts: every fit under the lights of JUDGE, apart from the
+%!   ## in-sample scores
+%!   assert (! isempty (strfind (rep, "## Held-out verdicts: every fit in light it was not made for")));
+%!   assert (! isempty (regexp (rep, ["\\| red-plastic \\| in-plane \\(the paper's method\\) \\| 2 \\| 0\\.\\d{4} \\| " ...
+%!                                    "0\\.\\d{4} \\| 0\\.\\d{4} \\| 0\\.\\d{4} \\| \\*\\*0\\.\\d{4}\\*\\* \\|"])), rep);
+%!   assert (! isempty (strfind (rep, "in-sample")));
 %!   ## the best model of each material: Lafortune's, the one model of MODELS,
 %!   ## or, in the run with the extra method inplane_ggx, Lafortune's or GGX
 %!   assert (! isempty (strfind (rep, "## The best model")));
 %!   if (isempty (extra))
-%!     assert (! isempty (regexp (rep, ["\\| red-plastic \\| 3 \\| 0\\.\\d{4} \\((inplane|hemisphere|scene)\\) \\| " ...
+%!     assert (! isempty (regexp (rep, ["\\| red-plastic \\| 3 \\| 0\\.\\d{4} \\((inplane|general|scene)\\) \\| " ...
 %!                                      "\\*\\*lafortune\\*\\* \\|"])), rep);
 %!   else
 %!     assert (! isempty (regexp (rep, ["\\| red-plastic \\| 3 \\| 0\\.\\d{4} \\((inplane|hemisphere|scene)\\) \\| " ...
@@ -70,12 +76,14 @@
 %!   endif
 %!   assert (isempty (regexp (rep, "NaN|Inf")));
 %!   S = jsondecode (fileread (fullfile (out, "summary.json")));
+%!   mths = merge (isempty (extra), {"inplane", "general", "scene"}, {"inplane", "hemisphere", "scene"});
 %!   for mat = {"green_metallic_paint", "red_plastic"}
 %!     s = S.materials.(mat{1});
-%!     for f = {"psnr_inplane_pov", "psnr_inplane_rt", "psnr_hemisphere_pov", "psnr_scene_pov", "psnr_scene_rt", "fit_rmse_inplane", ...
-%!              "flip_inplane_pov", "flip_scene_pov", "flip_scene_rt", "deltae_scene_pov", "deltae_inplane_pov", ...
-%!              "hue_scene_pov", ...
-%!              "fit_time_inplane", "render_time_measured", "render_time_pov", "spp_psnr", "spp_time"}
+%!     for f = [{"psnr_inplane_pov", "psnr_inplane_rt", "psnr_scene_pov", "psnr_scene_rt", "fit_rmse_inplane", ...
+%!               "flip_inplane_pov", "flip_scene_pov", "flip_scene_rt", "deltae_scene_pov", "deltae_inplane_pov", ...
+%!               "hue_scene_pov", ...
+%!               "fit_time_inplane", "render_time_measured", "render_time_pov", "spp_psnr", "spp_time"}, ...
+%!              strcat("flip_", mths, "_pov"), strcat("flip_", mths, "_heldout"), strcat("deltae_", mths, "_heldout")]
 %!       v = s.(f{1});
 %!       assert (isnumeric (v) && ! isempty (v) && all (isfinite (v(:))), sprintf ("%s.%s", mat{1}, f{1}));
 %!     endfor
@@ -96,13 +104,18 @@
 %!             sprintf ("%s %s", mat2str (s.deltae_scene_pov, 4), mat2str (s.deltae_inplane_pov, 4)));
 %!     ## the two renderers agree on the same model
 %!     assert (all (s.renderers_psnr > 30));
-%!     ## the best model: the lowest FLIP of every method
+%!     ## the best model: the lowest held-out FLIP of every method
 %!     b = S.best_model.(mat{1});
-%!     f = [s.flip_inplane_pov(:)'; s.flip_hemisphere_pov(:)'; s.flip_scene_pov(:)'];
+%!     f = cell2mat (cellfun (@(m) s.(["flip_" m "_heldout"])(:)', mths(:), "uniformoutput", false));
 %!     if (isempty (extra))
 %!       assert (b.model(:)', repmat ({"lafortune"}, 1, 3));
+%!       ## the general fit: the best method under held-out light at every
+%!       ## lobe count, and its held-out FLIP never rises with a lobe
+%!       bm = S.heldout.best_method.(mat{1});
+%!       assert (bm.method(:)', {"general", "general", "general"});
+%!       assert (all (diff (s.flip_general_heldout) <= 0.002), mat2str (s.flip_general_heldout, 4));
 %!     else
-%!       f(end+1,:) = s.flip_inplane_ggx_pov;
+%!       f(end+1,:) = s.flip_inplane_ggx_heldout;
 %!       assert (all (ismember (b.model, {"lafortune", "ggx"})));
 %!       assert (all (isfinite (s.fit_rmse_inplane_ggx)) && all (diff (s.fit_rmse_inplane_ggx) <= 1e-12));
 %!     endif
@@ -110,6 +123,7 @@
 %!   endfor
 %!   for f = {"figures/plane-red-plastic.png", "figures/renders-green-metallic-paint.png", ...
 %!            "figures/fit-trace.png", "figures/spp.png", "figures/env-samples.png", "fit/red-plastic-inplane-2.json", ...
+%!            "figures/heldout-red-plastic.png", "judge/red-plastic.json", "judge/red-plastic-measured.exr", ...
 %!            "fit/red-plastic-inplane-2.brdf", "render/red-plastic-measured.exr"}
 %!     assert (exist (fullfile (out, f{1}), "file") == 2, f{1});
 %!   endfor

@@ -1,0 +1,111 @@
+## Copyright (C) 2026 The lafortune developers
+## SPDX-License-Identifier: GPL-3.0-or-later
+
+## -*- texinfo -*-
+## @deftypefn {} {@var{R} =} repro_judge (@var{material})
+## Held-out step of `make reproduce` and `make database` (run by repro_step,
+## which writes @var{R} to RESULTS/judge/MATERIAL.json): every fit of
+## repro_fits (each method of METHODS, each lobe count of LOBES, and in
+## make database the published fit) judged in light it was not made for.
+## For each light of JUDGE the pipeline's scene (its geometry, camera and
+## size, JUDGE_SPP samples per pixel) is lit by that light (a light probe
+## with JUDGE_SAMPLES light samples per pixel sample, or a directional
+## light), the measured data rendered there by rt_render, and every fit
+## rendered from that render's cache (the same samples, only the BRDF
+## evaluated again) and compared with it by img_compare.  The renders under
+## the first light are written as RESULTS/judge/MATERIAL-measured.exr and
+## MATERIAL-METHOD-K.exr, for the held-out contact sheets.
+##
+## @var{R}: @code{lights} (struct array: @code{name}, @code{label},
+## @code{type}; empty with JUDGE empty), @code{time_measured} and
+## @code{time_fits} (seconds, over the lights), and per method a struct
+## array (one per lobe count of LOBES) with @code{lobes}, @code{flip},
+## @code{deltae}, @code{psnr}, @code{hue} (1 x lights) and their means
+## over the lights, @code{flip_mean}, @code{deltae_mean}, @code{psnr_mean},
+## @code{hue_mean}: the held-out verdict (NaN with JUDGE empty).
+## @end deftypefn
+function R = repro_judge (material)
+  c = repro_config ();
+  J = c.judge;
+  nl = numel (J);
+  R = struct ("material", material, "lights", struct ("name", {J.name}, "label", {J.label},
+                                                     "type", {J.type}),
+              "time_measured", 0, "time_fits", 0);
+  models = repro_fits (c, material);
+  q = {"flip", "deltae", "psnr", "hue"};
+  for method = fieldnames (models)'
+    mth = method{1};
+    for k = find (! cellfun (@isempty, models.(mth)))
+      r = struct ("lobes", k);
+      for f = q
+        r.(f{1}) = nan (1, nl);
+      endfor
+      for f = q
+        r.([f{1} "_mean"]) = NaN;
+      endfor
+      R.(mth)(slot (c, mth, k)) = r;
+    endfor
+  endfor
+  if (nl == 0)
+    return;
+  endif
+  b = merl_read (repro_files ("merl", c.data_dir, material));
+  d = fileparts (repro_files ("judge_measured", c.results, material));
+  if (! isfolder (d))
+    mkdir (d);
+  endif
+  for l = 1:nl
+    scene = judge_scene (c, J(l));
+    printf ("reproduce: [%s] held-out light %s: the measured data (rt_render, %d x %d, %d spp)\n",
+            material, J(l).label, scene.width, scene.height, scene.spp);
+    fflush (stdout);
+    t0 = tic ();
+    [ref, ~, cache] = rt_render (scene, b, "progress", false);
+    R.time_measured += toc (t0);
+    if (l == 1)
+      exrwrite ([repro_files("judge_measured", c.results, material) ".exr"], ref);
+    endif
+    t0 = tic ();
+    for method = fieldnames (models)'
+      mth = method{1};
+      for k = find (! cellfun (@isempty, models.(mth)))
+        img = rt_render (scene, models.(mth){k}, "progress", false, "cache", cache);
+        if (l == 1)
+          exrwrite ([repro_files("judge_render", c.results, material, mth, k) ".exr"], img);
+        endif
+        s = img_compare (ref, img);
+        j = slot (c, mth, k);
+        for f = q
+          R.(mth)(j).(f{1})(l) = s.(f{1});
+        endfor
+      endfor
+    endfor
+    R.time_fits += toc (t0);
+  endfor
+  for method = fieldnames (models)'
+    mth = method{1};
+    for j = 1:numel (R.(mth))
+      for f = q
+        R.(mth)(j).([f{1} "_mean"]) = mean (R.(mth)(j).(f{1}));
+      endfor
+    endfor
+    printf ("reproduce: [%s] %s: held-out FLIP (mean over %d lights) for %s lobe(s): %s\n", material,
+            mth, nl, mat2str ([R.(mth).lobes]), mat2str ([R.(mth).flip_mean], 4));
+  endfor
+endfunction
+
+## the record's index of method MTH's K-lobe fit: its place in LOBES (the
+## published fit has one)
+function j = slot (c, mth, k)
+  j = merge (strcmp (mth, "ngan2005"), 1, find (c.lobes == k));
+endfunction
+
+## the pipeline's scene lit by the held-out light L
+function scene = judge_scene (c, L)
+  if (strcmp (L.type, "environment"))
+    scene = repro_scene (c, "spp", c.judge_spp, "light", "environment", "map", L.map,
+                         "light_samples", c.judge_samples);
+  else
+    scene = repro_scene (c, "spp", c.judge_spp, "light_direction", L.direction);
+  endif
+endfunction
