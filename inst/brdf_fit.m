@@ -33,7 +33,10 @@
 ## @table @code
 ## @item "weight"
 ## the metric, as @code{lafortune_fit}'s (default @code{"plain"};
-## @code{"relative"} for a scene table).
+## @code{"relative"} for a scene table; for a hemisphere table of
+## @code{merl_samples} with its training views the general fit,
+## @code{"select"}: each candidate weighting fitted, the one that looks
+## best in the views kept per lobe count, as @code{lafortune_fit} does).
 ## @item "color"
 ## @code{"separate"} (default: each channel its own model) or
 ## @code{"shared"} (one shape per lobe for R, G and B, an amplitude per
@@ -81,6 +84,7 @@
 ## m1 = brdf_fit (S, "cooktorrance", 1, "color", "shared");
 ## ml = brdf_fit (S, "lafortune", 3);        # the paper's fit, lafortune_fit
 ## me = brdf_fit (S, "blinnphong", 1, "energy", true);
+## mg = brdf_fit (merl_samples (brdf), "ggx", 2);   # the general fit
 ## @end group
 ## @end example
 ## @seealso{brdf_model, brdf_albedo, lafortune_fit, material_eval}
@@ -188,6 +192,23 @@ endfunction
 %! g = brdf_fit (S, "ggx", 1);
 %! assert (g.ks / 1e3, f.ks, 1e-9);
 %! assert (g.alpha, f.alpha, 1e-9);
+
+%!test
+%! ## the general fit of another type: a hemisphere table with training views,
+%! ## each candidate weighting fitted, the best in the views kept per lobe count
+%! m = brdf_model ("ggx", "rho_d", [0.2 0.1 0.05], "ks", [0.5 0.4 0.3], "alpha", 0.2, "F0", 0.04);
+%! S = merl_samples (merl_synth (m), "max_samples", 3000);
+%! [f, info, ms] = brdf_fit (S, "ggx", 2);
+%! assert (info.type, "ggx");
+%! assert (any (strcmp (info.weight, {"log", "cuberoot"})));
+%! assert (size (info.selection.flip), [2 2]);
+%! assert (numel (ms), 2);
+%! assert (rows (ms{2}.ks), 2);
+%! assert (isequal (ms{2}, f));
+%! ## GGX data: one GGX lobe already looks right in the views
+%! assert (min (info.selection.flip(:,1)) < 0.05, mat2str (info.selection.flip, 3));
+%! assert (f.alpha(1,:), [0.2 0.2 0.2], 0.02);
+%!error <needs a table with training views> brdf_fit (merl_samples (merl_synth (struct ("rho_d", [0.1 0.1 0.1], "Cxy", -[1 1 1], "Cz", [1 1 1], "e", [10 10 10])), "max_samples", 100, "views", false), "ggx", 1, "weight", "select")
 
 %!error <Invalid call> brdf_fit (1, "ggx")
 %!error id=lafortune:badModelType brdf_fit (struct (), "phong", 1)

@@ -13,28 +13,34 @@
 ## @code{model}: METHODS crossed with MODELS, repro_method): PSNR, FLIP, ΔE
 ## (CIEDE2000) and the hue statistic of the fit's render with POV-Ray
 ## (@code{_pov}) and with rt_render (@code{_rt}) against the measured data
-## rendered by the same renderer (img_compare), errors (rmse, log rmse and
-## cosine-weighted rmse as Ngan et al. 2005, means over R, G, B, on each
-## method's table), fit time, render times, the model's size
+## rendered by the same renderer (img_compare) in the scene's own light
+## (in-sample for the scene fits), the same four as means over the
+## held-out lights of JUDGE (@code{_heldout}, repro_judge) and the FLIP
+## under each of them (@code{flip_heldout_LIGHT}), errors (rmse, log rmse
+## and cosine-weighted rmse as Ngan et al. 2005, means over R, G, B, on
+## each method's table), fit time, render times, the model's size
 ## (@code{params}: the numbers it holds, @code{json_bytes}: its JSON
 ## file), its largest albedo (@code{albedo_max}, for the types brdf_fit
 ## reports it of) and its parameters (the columns of every type's fields); a
 ## material whose file could not be read or processed gets one row with
 ## status @code{error} and the message.
 ## @item report.md
-## the summary across materials (median PSNR, FLIP, ΔE and hue, worst and
-## best PSNR and worst FLIP per method and lobe count), the pairs of fits
-## that PSNR and FLIP rank differently, the materials where the recommended
-## fit's FLIP rises with one more lobe (FAIL_FLIP_DROP), the materials where
-## the Lafortune model fails (judged by FLIP: FAIL_FLIP, FAIL_FLIP_GAIN;
-## PSNR beside it), the models compared (MODELS: the best model per
-## material and lobe count, medians per model for metals and non-metals,
-## sizes, energy, where Lafortune loses; db_models), every material's
-## numbers, times per stage, and the
-## plots @file{figures/psnr-lobes.png} and @file{figures/flip-lobes.png}
-## (PSNR and FLIP against the lobe count).
+## the summary across materials (in-sample median PSNR, FLIP, ΔE and hue,
+## worst and best PSNR and worst FLIP, and the held-out median FLIP and
+## ΔE, per method and lobe count), the published baseline, the pairs of
+## fits that PSNR and FLIP rank differently, and the verdicts, all on the
+## held-out mean FLIP (on the in-sample FLIP only with JUDGE empty, which
+## the report then says): the materials where the recommended fit
+## (general) renders worse with one more lobe (FAIL_FLIP_DROP), where the
+## Lafortune model fails (FAIL_FLIP, FAIL_FLIP_GAIN; PSNR beside it), the
+## models compared (MODELS: the best model per material and lobe count,
+## medians per model for metals and non-metals, Lavoué's split, sizes,
+## energy, where Lafortune loses; db_models); every material's numbers,
+## times per stage, and the plots @file{figures/psnr-lobes.png} (in-sample
+## PSNR) and @file{figures/flip-lobes.png} (the verdicts' FLIP) against the
+## lobe count.
 ## @item gallery/index.html
-## the contact sheets of all materials.
+## the contact sheets of all materials, in-sample and held out.
 ## @item summary.json
 ## the same numbers for machines.
 ## @end table
@@ -191,10 +197,12 @@ function db_report ()
   endfor
   repro_save (repro_files ("table", c.results, ""), [strjoin(rows, "\n") "\n"]);
 
-  ## --- the plots: PSNR and FLIP against lobe count, every material
-  plot_lobes_db (P, c, mats, "PSNR against the measured render (dB)", [],
+  ## --- the plots: PSNR (in-sample) and FLIP (the verdicts') against lobe
+  ## count, every material
+  plot_lobes_db (P, c, mats, "in-sample PSNR against the measured render (dB), POV-Ray", [],
                  [], repro_files ("fig_psnr_lobes", c.results, ""));
-  plot_lobes_db (F, c, mats, "FLIP against the measured render (lower is better)", [0 1],
+  plot_lobes_db (V, c, mats, ifelse (nj > 0, "held-out FLIP, mean over JUDGE's lights (lower is better)",
+                                     "in-sample FLIP, POV-Ray (lower is better)"), [0 1],
                  c.fail_flip, repro_files ("fig_flip_lobes", c.results, ""));
 
   ## --- report.md
@@ -271,8 +279,9 @@ function db_report ()
   L{end+1} = "";
   L{end+1} = sprintf ("![PSNR against lobe count, every material](%s)", repro_files ("fig_psnr_lobes", "", ""));
   L{end+1} = "";
-  L{end+1} = sprintf ("![FLIP against lobe count, every material (dashed: FAIL_FLIP = %g)](%s)",
-                      c.fail_flip, repro_files ("fig_flip_lobes", "", ""));
+  L{end+1} = sprintf ("![%s against lobe count, every material (dashed: FAIL_FLIP = %g)](%s)",
+                      ifelse (nj > 0, "held-out FLIP", "in-sample FLIP"), c.fail_flip,
+                      repro_files ("fig_flip_lobes", "", ""));
   L{end+1} = "";
 
   ## --- the published fit: Ngan et al.'s 1-lobe fits against the toolbox's

@@ -11,9 +11,13 @@
 ## repro_method); the tables:
 ## @code{inplane}, the paper's way (plane of incidence, grazing angles left
 ## out), @code{hemisphere}, the whole valid hemisphere (subsampled to
-## HEMI_SAMPLES, weighted by solid angle), and @code{scene}, the recommended
-## fit for the best picture: the angle pairs the scene's pixels see, with
-## @code{lafortune_fit}'s defaults for a scene table; a method may name its
+## HEMI_SAMPLES, plain solid-angle weights), @code{general}, the recommended
+## fit when the scene is not known (the same table with its training views:
+## @code{lafortune_fit}'s defaults there, which choose the weighting by
+## FLIP in those views; its record has @code{selection}), and
+## @code{scene}, the fit for the scene's own light: the angle pairs the
+## scene's pixels see, with @code{lafortune_fit}'s defaults for a scene
+## table; a method may name its
 ## colour mode (@code{scene_shared}, see repro_table); export every model
 ## to RESULTS/fit/ MATERIAL-METHOD-K.json, .txt and .brdf (BRDF Explorer).
 ##

@@ -16,7 +16,8 @@
 ## pixel, with the whole hemisphere as a weak prior).  Grazing angles
 ## beyond MAX_ANGLE are left out of the first two.  The fit's options are
 ## the method's (repro_method's @code{opts}) over brdf_fit's defaults for
-## the table (for a scene table the recommended fit, else the paper's).
+## the table (for a scene table the fit for that scene, for the general
+## table the general fit, for the in-plane one the paper's).
 ## @end deftypefn
 function S = repro_table (b, name, c, max_samples = Inf)
   p = repro_method (name);

@@ -336,6 +336,34 @@
 %!   assert (repro_method ("hemisphere_ward").label, "hemisphere, ward");
 %!   assert (repro_method ({"inplane", "scene_shared", "hemisphere_ward"}, {"lafortune", "ggx"}),
 %!           {"inplane", "scene_shared", "hemisphere_ward", "inplane_ggx", "scene_shared_ggx"});
+%!   ## JUDGE: light probes and directions X,Y,Z; a setting set empty on make's
+%!   ## command line (LAFORTUNE_EMPTY) is empty, not config.mk's default
+%!   env0 = {getenv("JUDGE"), getenv("LAFORTUNE_EMPTY")};
+%!   unwind_protect
+%!     setenv ("JUDGE", "studio 0,2,0");
+%!     c = repro_config ();
+%!     assert ({c.judge.type}, {"environment", "directional"});
+%!     assert ({c.judge.map}, {"studio", ""});
+%!     assert (c.judge(2).direction, [0 1 0]);
+%!     for bad = {"0,0,0", "1,2", "Studio!"}
+%!       setenv ("JUDGE", bad{1});
+%!       try
+%!         repro_config ();
+%!         error ("JUDGE=%s was taken", bad{1});
+%!       catch err
+%!         assert (err.identifier, "lafortune:badConfig");
+%!         assert (! isempty (strfind (err.message, ["JUDGE has '" bad{1} "'"])), err.message);
+%!       end_try_catch
+%!     endfor
+%!     unsetenv ("JUDGE");
+%!     assert (numel (repro_config ().judge), 3);       # config.mk's default
+%!     setenv ("LAFORTUNE_EMPTY", "PUBLISHED JUDGE");
+%!     c = repro_config ();
+%!     assert (isempty (c.judge) && isempty (c.published));
+%!   unwind_protect_cleanup
+%!     setenv ("JUDGE", env0{1});
+%!     setenv ("LAFORTUNE_EMPTY", env0{2});
+%!   end_unwind_protect
 %!   fail ('repro_method ("scene_lafortune")', "unknown method");
 %!   fail ('repro_method ("scene_shared_ggx_ward")', "unknown method");
 %! unwind_protect_cleanup
