@@ -9,6 +9,7 @@
 ##
 ## Steps: @code{fit} (repro_fit), @code{render_measured}
 ## (repro_render_measured), @code{render_fits} (repro_render_fits),
+## @code{judge} (repro_judge: every fit under the held-out lights of JUDGE),
 ## @code{spp} (repro_spp), @code{study} (repro_study) and @code{sheet}
 ## (db_sheet); a step reads the records of the steps it follows
 ## (repro_files's @code{up}) and fails when one of them failed.  Every record has the
