@@ -81,9 +81,9 @@ function stops = sheet (c, material, rec, ref, get, Q, l, ttl, file)
   W = pw * (1 + nk);
   H = (ph + tt) * nm + hh;
   h = figure ("visible", "off", "position", [0, 0, W, H]);
-  annotation ("textbox", [0, 1 - hh / H, 1, hh / H], "string", ttl, "edgecolor", "none",
-              "horizontalalignment", "center", "verticalalignment", "middle", "fontsize", 11,
-              "fontweight", "bold", "interpreter", "none");
+  axes ("position", [0, 1 - hh / H, 1, hh / H], "visible", "off", "xlim", [0 1], "ylim", [0 1]);
+  text (0.5, 0.5, ttl, "horizontalalignment", "center", "verticalalignment", "middle", "fontsize", 11,
+        "fontweight", "bold", "interpreter", "none");
   for i = 1:nm
     mth = rows_{i};
     name = names{i};
