@@ -778,4 +778,15 @@ endfunction
 %! ## a table without views: log weights; "select" needs the views
 %! [~, i0] = lafortune_fit (S0, 1);
 %! assert (i0.weight, "log");
+%!test
+%! ## a candidate whose render is not finite in a view (on this stand-in a
+%! ## log-weighted lobe beyond the grazing cut) scores Inf and is not kept:
+%! ## the general fit renders finite in every view
+%! S = merl_samples (merl_standin ("green-metallic-paint"), "max_samples", 5000);
+%! [m, info] = lafortune_fit (S, 3);
+%! sel = info.selection;
+%! assert (all (isfinite (sel.flip(sub2ind (size (sel.flip), sel.chosen, sel.lobes)))), mat2str (sel.flip, 3));
+%! for v = S.views(:)'
+%!   assert (all (isfinite (rt_render (v.scene, m, "progress", false, "cache", v.cache)(:))));
+%! endfor
 %!error <needs a table with training views> lafortune_fit (merl_plane (merl_synth (struct ("rho_d", [0.1 0.1 0.1], "Cxy", -[1 1 1], "Cz", [1 1 1], "e", [10 10 10]))), 1, "weight", "select")
