@@ -47,6 +47,7 @@ function R = repro_judge (material)
     endfor
   endfor
   if (nl == 0)
+    R.lights = {};                      # jsonencode aborts Octave on an empty struct array
     return;
   endif
   b = merl_read (repro_files ("merl", c.data_dir, material));

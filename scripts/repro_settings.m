@@ -13,6 +13,9 @@ function repro_settings ()
   ## output folder must not make the other materials' steps out of date
   ## nor POV-Ray's thread count, which does not change the images
   s = rmfield (c, {"results", "data_dir", "merl_dir", "materials", "database", "pov_threads"});
+  if (isempty (s.judge))
+    s.judge = {};                       # jsonencode aborts Octave on an empty struct array
+  endif
   txt = jsonencode (s);
   f = repro_files ("settings", c.results, "");
   if (exist (f, "file") && strcmp (fileread (f), txt))

@@ -370,7 +370,8 @@
 %!   rmpath (fullfile (top, "scripts"));
 %! end_unwind_protect
 %! db = fullfile (out, "db-models");
-%! [st, txt] = __make (top, db, merl, "-j2 database MODELS='lafortune ggx' METHODS='inplane general' METALS=red-plastic");
+%! ## without held-out lights (JUDGE= on make's command line): every verdict in-sample, and said so
+%! [st, txt] = __make (top, db, merl, "-j2 database MODELS='lafortune ggx' METHODS='inplane general' METALS=red-plastic JUDGE=");
 %! assert (st == 0, "%s", txt);
 %! U = __table (fullfile (db, "table.csv"));
 %! col = @(n) find (strcmp (U(1,:), n));
@@ -394,15 +395,25 @@
 %!   assert (all (isfinite (str2double (U(r,col("alpha1_g"))))));
 %!   assert (all (cellfun ("isempty", U(r,col("cxy1_g")))));
 %! endfor
-%! ## the Lafortune rows (and the error row) are those of the MODELS=lafortune run, column by column
+%! ## the Lafortune rows (and the error row) are those of the MODELS=lafortune run, column by
+%! ## column, but for the held-out ones: none without JUDGE
 %! [in, cu] = ismember (T(1,:), U(1,:));
-%! assert (nnz (! in), 3);                    # rmse, log_rmse, cos_rmse on the scene table
+%! assert (nnz (! in), 3 + 3);                # rmse, log_rmse, cos_rmse on the scene table; a FLIP per light
+%! h = ! cellfun ("isempty", regexp (T(1,:), "heldout"));
+%! assert (all (cellfun ("isempty", U(2:end,cu(in & h)))(:)));
+%! in &= ! h;
 %! lt = ismember (T(:,2), {"method", "inplane", "general", "ngan2005"}) | strcmp (T(:,1), "truncated");
 %! lu = ismember (U(:,2), {"method", "inplane", "general", "ngan2005"}) | strcmp (U(:,1), "truncated");
 %! assert (isequal (U(lu,cu(in)), T(lt,in)));
 %! ## the report's section
 %! rep = fileread (fullfile (db, "report.md"));
 %! assert (! isempty (strfind (rep, "## Models compared")), rep);
+%! assert (! isempty (strfind (rep, "Judged by in-sample FLIP (POV-Ray renders in the light the scene fits were made for: JUDGE is empty)")), rep);
+%! assert (! exist (fullfile (db, "materials", "red-plastic", "sheet", "red-plastic-heldout.png"), "file"));
+%! J = jsondecode (fileread (fullfile (db, "materials", "red-plastic", "judge", "red-plastic.json")));
+%! assert (isempty (J.lights));
+%! x = J.general_ggx(1).flip_mean;
+%! assert (isempty (x) || isnan (x));
 %! assert (! isempty (strfind (rep, "Metals (METALS in config.mk): red-plastic; the other 1 processed materials are the non-metals.")), rep);
 %! for m = {"green-metallic-paint \\| no", "red-plastic \\| yes"}
 %!   assert (! isempty (regexp (rep, ["\\| " m{1} " \\| \\*\\*(lafortune|ggx)\\*\\* 0\\.\\d{3} \\((inplane|general)(_ggx)?\\) \\| " ...
