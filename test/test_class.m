@@ -56,6 +56,9 @@
 %!   assert (q(3).psnr > q(1).psnr);
 %!   assert (q(3).flip < q(1).flip);          # 3 lobes look closer than 1
 %!   assert (all ([q.deltae] >= 0 & [q.hue] >= 0));
+%!   ## the general fit, judged in light no fit was made for
+%!   assert (rows (G.Cxy), 2);
+%!   assert (h(2) < h(1), mat2str (h, 3));
 %! unwind_protect_cleanup
 %!   cd (old);
 %!   close (setdiff (get (0, "children"), before));
