@@ -29,9 +29,7 @@ function repro_data (material)
       return;
     endif
   endif
-  if (! isfolder (fileparts (out)))
-    mkdir (fileparts (out));
-  endif
+  repro_mkdir (fileparts (out));
   if (strcmp (src.kind, "merl-file"))
     printf ("reproduce: [%s] reading %s\n", material, merl);
     b = merl_read (merl);          # validates the file

@@ -35,9 +35,7 @@
 function repro_figures ()
   c = repro_config ();
   fd = fileparts (repro_files ("figures", c.results, ""));
-  if (! isfolder (fd))
-    mkdir (fd);
-  endif
+  repro_mkdir (fd);
   nl = numel (c.lobes);
   lobe_names = arrayfun (@(k) sprintf ("%d lobe%s", k, ifelse (k > 1, "s", "")), c.lobes,
                          "uniformoutput", false);

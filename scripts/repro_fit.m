@@ -57,9 +57,7 @@ function R = repro_fit (material)
     endif
   endfor
   outdir = fileparts (repro_files ("model", c.results, material, "", 1));
-  if (! isfolder (outdir))
-    mkdir (outdir);
-  endif
+  repro_mkdir (outdir);
   R = struct ("material", material, "lobes", c.lobes);
   for i = 1:numel (c.methods)
     mth = c.methods{i};

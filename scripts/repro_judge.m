@@ -52,9 +52,7 @@ function R = repro_judge (material)
   endif
   b = merl_read (repro_files ("merl", c.data_dir, material));
   d = fileparts (repro_files ("judge_measured", c.results, material));
-  if (! isfolder (d))
-    mkdir (d);
-  endif
+  repro_mkdir (d);
   for l = 1:nl
     scene = judge_scene (c, J(l));
     printf ("reproduce: [%s] held-out light %s: the measured data (rt_render, %d x %d, %d spp)\n",

@@ -11,9 +11,7 @@
 ## @end deftypefn
 function repro_print (h, file, dpi, who)
   d = fileparts (file);
-  if (! isempty (d) && ! isfolder (d))
-    mkdir (d);
-  endif
+  repro_mkdir (d);
   tmp = [file ".tmp.png"];
   unwind_protect
     print (h, "-dpngcairo", sprintf ("-r%d", dpi), tmp);

@@ -22,9 +22,7 @@ function R = repro_render_measured (material)
   fflush (stdout);
   [img, info] = rt_render (scene, b, "progress", true);
   base = repro_files ("measured", c.results, material);
-  if (! isfolder (fileparts (base)))
-    mkdir (fileparts (base));
-  endif
+  repro_mkdir (fileparts (base));
   exrwrite ([base ".exr"], img);
   img_write_png ([base ".png"], img, "auto");
   ## the measured data through POV-Ray as well, with the fits' samples: the

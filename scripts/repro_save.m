@@ -9,9 +9,7 @@
 ## @end deftypefn
 function repro_save (file, value)
   d = fileparts (file);
-  if (! isempty (d) && ! isfolder (d))
-    mkdir (d);
-  endif
+  repro_mkdir (d);
   if (ischar (value))
     txt = value;
   else

@@ -364,6 +364,18 @@
 %!     setenv ("JUDGE", env0{1});
 %!     setenv ("LAFORTUNE_EMPTY", env0{2});
 %!   end_unwind_protect
+%!   ## a folder that another step made meanwhile is no error (make -j: two
+%!   ## materials' first steps make results/data at once)
+%!   d = fullfile (out, "mk", "a", "b");
+%!   repro_mkdir (d);
+%!   repro_mkdir (d);
+%!   assert (isfolder (d));
+%!   try
+%!     repro_mkdir ("/proc/no/such/folder");
+%!     error ("made a folder under /proc");
+%!   catch err
+%!     assert (err.identifier, "lafortune:unwritable");
+%!   end_try_catch
 %!   fail ('repro_method ("scene_lafortune")', "unknown method");
 %!   fail ('repro_method ("scene_shared_ggx_ward")', "unknown method");
 %! unwind_protect_cleanup
