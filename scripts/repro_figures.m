@@ -128,7 +128,7 @@ function study_figure (c, mat, file, q)
   endif
   done (plot_lobes (P, weights, "paper", repmat ({paper}, 1, numel (tables)),
                     "highlight", find (strcmp (weights, "relative")), "panels", names, "ylabel", ylab,
-                    "title", sprintf ("%s: %s of each fit's POV-Ray render, by table and weighting", mat, what),
+                    "title", sprintf ("%s: %s of each fit's POV-Ray render in the scene (in-sample for the scene table), by table and weighting", mat, what),
                     "file", file));
 endfunction
 
