@@ -12,8 +12,13 @@ function repro_mkdir (d)
   if (isempty (d) || isfolder (d))
     return;
   endif
-  [ok, msg] = mkdir (d);
-  if (! ok && ! isfolder (d))
-    error ("lafortune:unwritable", "cannot make the folder '%s': %s", d, msg);
-  endif
+  ## a parent made meanwhile by another process fails this process's
+  ## mkdir of its parents ("File exists"): then try again, the parent is there
+  for attempt = 1:4
+    [ok, msg] = mkdir (d);
+    if (ok || isfolder (d))
+      return;
+    endif
+  endfor
+  error ("lafortune:unwritable", "cannot make the folder '%s': %s", d, msg);
 endfunction
