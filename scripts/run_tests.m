@@ -193,8 +193,33 @@ for k = 1:numel (bad)
   printf ("\n---- failures in %s ----\n", bad{k}{1});
   lines = strsplit (bad{k}{2}, "\n");
   if (numel (lines) > 100)
-    ## the failing block's message is at its end
-    lines = [lines(1:30), {sprintf("[... %d lines ...]", numel (lines) - 90)}, lines(end-59:end)];
+    ## the failing block's head and end, and each failure's message (from
+    ## "!!!!!" to its shared variables, which can be long)
+    keep = false (size (lines));
+    keep([1:30, end-59:end]) = true;
+    for i = find (strncmp (lines, "!!!!!", 5))
+      j = i + find (strncmp (lines(i+1:end), "shared variables", 16), 1);
+      if (isempty (j))
+        j = numel (lines) + 1;
+      endif
+      keep(i:min ([j, i + 40, numel(lines)])) = true;
+    endfor
+    out = {};
+    i = 1;
+    while (i <= numel (lines))
+      if (keep(i))
+        out{end+1} = lines{i};
+        i++;
+      else
+        j = i + find (keep(i+1:end), 1) - 1;
+        if (isempty (j))
+          j = numel (lines);
+        endif
+        out{end+1} = sprintf ("[... %d lines ...]", j - i + 1);
+        i = j + 1;
+      endif
+    endwhile
+    lines = out;
   endif
   printf ("%s\n", strjoin (lines, "\n"));
 endfor
