@@ -131,7 +131,7 @@
 %!   t0 = dir (fullfile (out, "report.md")).datenum;
 %!   [st, txt] = system (cmd);
 %!   assert (st, 0);
-%!   assert (isempty (regexp (txt, "\\] (fitting|rendering|POV-Ray render|figures)")), txt);
+%!   assert (isempty (regexp (txt, "\\] (fitting|rendering|POV-Ray render|held-out light|figures)")), txt);
 %!   assert (dir (fullfile (out, "report.md")).datenum, t0);
 %! unwind_protect_cleanup
 %!   if (strncmp (out, tempdir (), numel (tempdir ())) && isfolder (out))
