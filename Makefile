@@ -215,7 +215,7 @@ endif
 
 DB_OUT := $(foreach k,table report summary gallery fig_psnr_lobes fig_flip_lobes,$(DB)/$(FILE_$(k)))
 
-.PHONY: database db-list
+.PHONY: database db-list db-settings
 database: deps
 	@test -n "$(DB_MATS)" || { echo "database: no *.binary file in MERL_DIR=$(MERL_DIR)" >&2; exit 1; }
 	@$(MAKE) --no-print-directory -C src
@@ -232,6 +232,13 @@ endif
 # the materials, one per line (for job arrays)
 db-list:
 	@printf '%s\n' $(DB_MATS)
+
+# the database's settings.json, made once before the per-material jobs of a
+# cluster run: jobs that each wrote it would make it newer than the records
+# of a job that had already finished, and the merge would do that material again
+.PHONY: db-settings
+db-settings:
+	@$(MAKE) --no-print-directory -s $(DB)/$(FILE_settings)
 
 ifdef FILE_fit
 $(DB)/$(FILE_settings): FORCE
