@@ -84,7 +84,7 @@ function db_report ()
         X.(q{1}).(r{1}).(m{1}) = nan (numel (mats), nk);
         for i = ok
           if (isfield (D(i).rec.render_fits, m{1}))
-            X.(q{1}).(r{1}).(m{1})(i,:) = field_of (D(i).rec.render_fits.(m{1}), [q{1} "_" r{1}], nk);
+            X.(q{1}).(r{1}).(m{1})(i,:) = repro_row (D(i).rec.render_fits.(m{1}), [q{1} "_" r{1}], nk);
           endif
         endfor
       endfor
@@ -102,7 +102,7 @@ function db_report ()
         if (isfield (D(i).rec.judge, m{1}))
           r = D(i).rec.judge.(m{1});
           n = min (numel (r), nk);
-          X.(q{1}).heldout.(m{1})(i,1:n) = field_of (r, [q{1} "_mean"], n);
+          X.(q{1}).heldout.(m{1})(i,1:n) = repro_row (r, [q{1} "_mean"], n);
           for l = 1:nj
             X.(q{1}).light.(m{1})(i,1:n,l) = arrayfun (@(x) x.(q{1})(l), r(1:n));
           endfor
@@ -559,21 +559,6 @@ function v = param_cells (md, k, pf, nl)
         v = [v, {"", "", ""}];
       endif
     endfor
-  endfor
-endfunction
-
-## The values of FIELD in the struct array R (one per lobe count) as a
-## 1 x NK row; NaN for what the record lacks or holds as null (NaN, Inf)
-function v = field_of (R, field, nk)
-  v = nan (1, nk);
-  if (! isfield (R, field))
-    return;
-  endif
-  for j = 1:min (nk, numel (R))
-    x = R(j).(field);
-    if (isnumeric (x) && isscalar (x))
-      v(j) = x;
-    endif
   endfor
 endfunction
 

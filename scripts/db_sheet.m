@@ -31,7 +31,7 @@ function R = db_sheet (material)
   ## the fits' renderer's measured render: their PSNR's reference
   ref = exrread ([repro_files("measured_pov", c.results, material) ".exr"]);
   get = @(mth, k) exrread ([repro_files("fit_render", c.results, material, mth, k) ".exr"]);
-  stops = sheet (c, material, fits, ref, get, {"psnr_pov", "flip_pov", "deltae_pov"}, 1,
+  stops = sheet (c, fits, ref, get, {"psnr_pov", "flip_pov", "deltae_pov"},
                  sprintf ("%s: in the light the scene fits were made for (in-sample), POV-Ray", material),
                  repro_files ("sheet_png", c.results, material));
   R = struct ("file", repro_files ("sheet_png", "", material), "exposure", stops,
@@ -40,7 +40,7 @@ function R = db_sheet (material)
     light = judge.lights(1).label;
     ref = exrread ([repro_files("judge_measured", c.results, material) ".exr"]);
     get = @(mth, k) exrread ([repro_files("judge_render", c.results, material, mth, k) ".exr"]);
-    sheet (c, material, judge, ref, get, {"psnr", "flip", "deltae"}, 1,
+    sheet (c, judge, ref, get, {"psnr", "flip", "deltae"},
            sprintf ("%s: held out, under %s (no fit was made for it), rt_render", material, light),
            repro_files ("sheet_heldout_png", c.results, material));
     R.heldout_file = repro_files ("sheet_heldout_png", "", material);
@@ -50,9 +50,9 @@ endfunction
 
 ## One contact sheet into FILE: the measured render REF first in each row,
 ## then each method's fits GET (method, k), titled with the record REC's
-## measures Q (PSNR, FLIP, dE; at position L of a per-light row) and the
-## sheet's heading TTL; returns the exposure (stops)
-function stops = sheet (c, material, rec, ref, get, Q, l, ttl, file)
+## measures Q (PSNR, FLIP, dE; the first of a per-light row: the sheet's
+## light) and the sheet's heading TTL; returns the exposure (stops)
+function stops = sheet (c, rec, ref, get, Q, ttl, file)
   [rgb, stops] = img_tonemap (ref, "auto");
   ## the methods' rows, and the published fit's (one lobe) when it was rendered
   rows_ = c.methods;
@@ -96,19 +96,20 @@ function stops = sheet (c, material, rec, ref, get, Q, l, ttl, file)
         img = get (mth, lobes{i}(j));
         r = rec.(mth)(j);
         show (img_tonemap (img, stops), sprintf ("%s %d: %.1f dB, FLIP %.3f, dE %.1f", name, lobes{i}(j),
-                                                  num (r, Q{1}, l), num (r, Q{2}, l),
-                                                  num (r, Q{3}, l)), 8, "normal");
+                                                  num (r, Q{1}), num (r, Q{2}),
+                                                  num (r, Q{3})), 8, "normal");
       endif
     endfor
   endfor
   repro_print (h, file, 72, "db_sheet");  # makes the folder
 endfunction
 
-## the number R.(F)(L), NaN when the record lacks it or holds null (NaN, Inf)
-function x = num (r, f, l)
+## the number R.(F) (the first, of a per-light row), NaN when the record
+## lacks it or holds null (NaN, Inf)
+function x = num (r, f)
   x = NaN;
-  if (isfield (r, f) && isnumeric (r.(f)) && numel (r.(f)) >= l)
-    x = r.(f)(l);
+  if (isfield (r, f) && isnumeric (r.(f)) && ! isempty (r.(f)))
+    x = r.(f)(1);
   endif
 endfunction
 

@@ -106,8 +106,8 @@ function repro_report ()
       s.(["fit_time_" m{1}]) = max (F.(m{1}).lobe_time, [], 2)';
     endfor
     for m = c.methods
-      s.(["flip_" m{1} "_heldout"]) = heldout (J, m{1}, numel (c.lobes), "flip_mean");
-      s.(["deltae_" m{1} "_heldout"]) = heldout (J, m{1}, numel (c.lobes), "deltae_mean");
+      s.(["flip_" m{1} "_heldout"]) = repro_row (J.(m{1}), "flip_mean", numel (c.lobes));
+      s.(["deltae_" m{1} "_heldout"]) = repro_row (J.(m{1}), "deltae_mean", numel (c.lobes));
     endfor
     s.heldout_time_measured = J.time_measured;
     s.heldout_time_fits = J.time_fits;
@@ -294,7 +294,7 @@ function [L, S] = models_section (c, L, D)
     for i = 1:numel (mats)
       X = D.(fieldname (mats{i}));
       if (held)
-        F.(m{1})(i,:) = heldout (X.J, m{1}, numel (c.lobes), "flip_mean");
+        F.(m{1})(i,:) = repro_row (X.J.(m{1}), "flip_mean", numel (c.lobes));
       else
         F.(m{1})(i,:) = [X.R.(m{1}).flip_pov];
       endif
@@ -395,20 +395,6 @@ function [L, S] = heldout_section (c, L, D)
                         strrep (c.materials{i}, "-", " "), c.materials{i});
   endfor
   L{end+1} = "";
-endfunction
-
-## method M's held-out FIELD (flip_mean, ...) over NK lobe counts from the
-## judge record J; NaN where there is none
-function v = heldout (J, m, nk, field)
-  v = nan (1, nk);
-  if (isfield (J, m))
-    for j = 1:min (nk, numel (J.(m)))
-      x = J.(m)(j).(field);
-      if (isnumeric (x) && isscalar (x))
-        v(j) = x;
-      endif
-    endfor
-  endif
 endfunction
 
 function f = fieldname (mat)

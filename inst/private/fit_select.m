@@ -1,8 +1,7 @@
 ## Copyright (C) 2026 The lafortune developers
 ## SPDX-License-Identifier: GPL-3.0-or-later
 ## -*- texinfo -*-
-## @deftypefn  {} {[@var{model}, @var{info}, @var{models}] =} fit_select (@var{V}, @var{nlobes}, @var{front})
-## @deftypefnx {} {@var{W} =} fit_select ()
+## @deftypefn {} {[@var{model}, @var{info}, @var{models}] =} fit_select (@var{V}, @var{nlobes}, @var{front})
 ## The general fit's choice (private, both fronts), in two stages as Bieron
 ## and Peers 2020 choose: fit the table with each candidate weighting
 ## @var{W} (@code{front (w)} is the front called with @qcode{"weight"},
@@ -29,10 +28,6 @@ function [model, info, models] = fit_select (V, nlobes, front)
   ## the candidates: the hemisphere table's weightings that the held-out
   ## measurement over 26 materials left in (README, "One fit for every scene")
   W = {"log", "cuberoot"};
-  if (nargin == 0)
-    model = W;
-    return;
-  endif
   nw = numel (W);
   F = NaN (nw, nlobes);
   all_models = cell (nw, nlobes);
