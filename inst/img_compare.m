@@ -3,7 +3,8 @@
 
 ## -*- texinfo -*-
 ## @deftypefn  {lafortune} {@var{q} =} img_compare (@var{ref}, @var{img})
-## @deftypefnx {lafortune} {@var{q} =} img_compare (@var{ref}, @var{img}, @var{name}, @var{value}, @dots{})
+## @deftypefnx {lafortune} {@var{q} =} img_compare (@var{ref}, @{@var{img1}, @var{img2}, @dots{}@})
+## @deftypefnx {lafortune} {@var{q} =} img_compare (@dots{}, @var{name}, @var{value}, @dots{})
 ## How far a render @var{img} is from the reference render @var{ref}, by
 ## every measure the toolbox reports: the one place where a comparison's
 ## numbers are made, for the pipelines, the tour and a user's own renders.
@@ -26,6 +27,11 @@
 ## @code{img_deltae}'s hue statistic: the chroma-weighted mean hue-angle
 ## difference in degrees (a highlight or body of the wrong colour).
 ## @end table
+## With a cell array of renders, @var{q} is a struct array, one element per
+## render, each the same as @code{img_compare (ref, img@var{i})}: what
+## depends on the reference alone (its exposures, its filtered images and
+## colours) is computed once for all of them, so comparing several fits with
+## one reference costs less than comparing them one at a time.
 ## Options: @qcode{"maps"}, true: also @code{q.flip_map} and
 ## @code{q.deltae_map} (@var{H} x @var{W}).  Lower FLIP, ΔE and hue and
 ## higher PSNR are better.  PSNR is dominated by the highlight's peak;
@@ -50,15 +56,26 @@ function q = img_compare (ref, img, varargin)
   if (! (isscalar (opt.maps) && (islogical (opt.maps) || isnumeric (opt.maps))))
     error ("lafortune:badOption", "img_compare: MAPS must be true or false");
   endif
-  q.psnr = img_psnr (ref, img);
-  [q.flip, fmap] = img_flip (ref, img);
-  [dmap, s] = img_deltae (ref, img);
-  q.deltae = s.mean;
-  q.hue = s.hue;
-  if (opt.maps)
-    q.flip_map = fmap;
-    q.deltae_map = dmap;
+  several = iscell (img);
+  if (several && isempty (img))
+    error ("lafortune:badImage", "img_compare: IMG must be an image or a non-empty cell array of images");
   endif
+  imgs = img;
+  if (! several)
+    imgs = {img};
+  endif
+  [flip, fmap] = img_flip (ref, imgs);
+  [dmap, s] = img_deltae (ref, imgs);
+  for i = numel (imgs):-1:1
+    q(i).psnr = img_psnr (ref, imgs{i});
+    q(i).flip = flip(i);
+    q(i).deltae = s(i).mean;
+    q(i).hue = s(i).hue;
+    if (opt.maps)
+      q(i).flip_map = fmap{i};
+      q(i).deltae_map = dmap{i};
+    endif
+  endfor
 endfunction
 
 %!test
@@ -83,7 +100,22 @@ endfunction
 %! assert (b.flip < g.flip / 3);
 %! assert (b.deltae < g.deltae / 3);
 
+%!test
+%! ## several renders against one reference: each as compared alone
+%! [y, x] = ndgrid (linspace (-1, 1, 40), linspace (-1, 1, 30));
+%! disc = x .^ 2 + y .^ 2 < 0.6;
+%! ref = disc .* cat (3, 0.3, 0.2, 0.1) .* (1 + 4 * exp (-((x - 0.2) .^ 2 + y .^ 2) / 0.02));
+%! imgs = {1.1 * ref, ref .* cat(3, 1, 1.2, 0.8), disc .* cat(3, 0.2, 0.2, 0.2), circshift(ref, [0 3])};
+%! q = img_compare (ref, imgs, "maps", true);
+%! assert (size (q), [1 4]);
+%! for i = 1:4
+%!   assert (q(i), img_compare (ref, imgs{i}, "maps", true));
+%! endfor
+%! assert (q(4).flip > q(1).flip);
+
 %!error <Invalid call> img_compare (ones (2, 2, 3))
+%!error id=lafortune:badImage img_compare (ones (2, 2, 3), {})
+%!error id=lafortune:badImage img_compare (ones (2, 2, 3), {ones(2, 2, 3), ones(3, 2, 3)})
 %!error id=lafortune:badImage img_compare (ones (2, 2, 3), ones (3, 2, 3))
 %!error id=lafortune:badOption img_compare (ones (2, 2, 3), ones (2, 2, 3), "maps", "yes")
 %!error id=lafortune:badOption img_compare (ones (2, 2, 3), ones (2, 2, 3), "colour", 1)

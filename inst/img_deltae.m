@@ -55,6 +55,10 @@
 ## @qcode{"ciede2000"}).  With no pixel in the mask the statistics are NaN
 ## and @code{npix} is 0.
 ##
+## @var{test} may be a cell array of images: then @var{de} is a cell array
+## and @var{s} a struct array, each the same as comparing that image alone;
+## the reference's exposure and colours are computed once for all of them.
+##
 ## The hue statistic tells a fit whose colour has drifted from one that is
 ## only brighter or darker.  It is computed in CIELAB of the displayed images
 ## (as for @qcode{"ciede2000"}, with either metric): per pixel, the weight is
@@ -107,74 +111,108 @@ function [de, s] = img_deltae (ref, test, varargin)
            fname);
   endif
   ref = check_image (ref, "REF", lab, fname);
-  test = check_image (test, "TEST", lab, fname);
-  if (! isequal (size (ref), size (test)))
-    error ("lafortune:badImage", "%s: REF and TEST must have the same size, got %s and %s",
-           fname, mat2str (size (ref)), mat2str (size (test)));
+  several = iscell (test);
+  if (! several)
+    test = {test};
+  elseif (isempty (test))
+    error ("lafortune:badImage", "%s: TEST must be an image or a non-empty cell array of images",
+           fname);
   endif
+  for i = 1:numel (test)
+    test{i} = check_image (test{i}, "TEST", lab, fname);
+    if (! isequal (size (ref), size (test{i})))
+      error ("lafortune:badImage", "%s: REF and TEST must have the same size, got %s and %s",
+             fname, mat2str (size (ref)), mat2str (size (test{i})));
+    endif
+  endfor
   [h, w, ~] = size (ref);
   n = h * w;
   mask = opt.mask;
-  if (isempty (mask))
-    mask = any (ref != 0 | test != 0, 3);
-  elseif (! (islogical (mask) || (isnumeric (mask) && isreal (mask)
-                                 && all (mask(:) == 0 | mask(:) == 1)))
-          || ! isequal (size (mask), [h w]))
+  if (! isempty (mask) && (! (islogical (mask) || (isnumeric (mask) && isreal (mask)
+                                                   && all (mask(:) == 0 | mask(:) == 1)))
+                           || ! isequal (size (mask), [h w])))
     got = describe (mask);
     error ("lafortune:badOption",
            "%s: \"mask\" must be a %dx%d logical array (the images' H x W), got %s",
            fname, h, w, got);
   endif
-  mask = logical (mask(:));
-
+  ## the reference's part, once for every test image
   A = reshape (ref, n, 3);
-  B = reshape (test, n, 3);
+  nzA = any (A != 0, 2);
   if (lab)
     exposure = NaN;
     labA = A;
-    labB = B;
   else
     [~, exposure] = tonemap (ref, opt.exposure, fname);
     k = 2 ^ exposure;
     if (strcmp (metric, "ciede2000") || nargout > 1)
       labA = srgb_to_lab (min (max (A * k, 0), 1));
+    endif
+    if (strcmp (metric, "itp"))
+      nits = double (opt.nits);
+      iA = ictcp (A * (k * nits));
+    endif
+  endif
+  nt = numel (test);
+  des = cell (1, nt);
+  for i = 1:nt
+    B = reshape (test{i}, n, 3);
+    if (lab)
+      labB = B;
+    elseif (strcmp (metric, "ciede2000") || nargout > 1)
       labB = srgb_to_lab (min (max (B * k, 0), 1));
     endif
-  endif
-  if (strcmp (metric, "ciede2000"))
-    de = ciede2000 (labA, labB);
-    nits = NaN;
-  else
-    nits = double (opt.nits);
-    d = ictcp (A * (k * nits)) - ictcp (B * (k * nits));
-    de = 720 * sqrt (d(:,1).^2 + (d(:,2) / 2).^2 + d(:,3).^2);
-  endif
-  de = reshape (de, h, w);
-
-  if (nargout > 1)
-    s = struct ("mean", NaN, "median", NaN, "p95", NaN, "hue", NaN, "npix", nnz (mask),
-                "metric", metric, "exposure", exposure, "nits", nits);
-    if (s.npix > 0)
-      v = de(mask);
-      s.mean = mean (v);
-      s.median = median (v);
-      s.p95 = nth_element (v, ceil (0.95 * numel (v)));
-      a = labA(mask,:);
-      b = labB(mask,:);
-      Ca = sqrt (a(:,2).^2 + a(:,3).^2);
-      Cb = sqrt (b(:,2).^2 + b(:,3).^2);
-      dh = abs (atan2d (a(:,3), a(:,2)) - atan2d (b(:,3), b(:,2)));
-      dh = min (dh, 360 - dh);
-      dh(Cb < 1) = 90;
-      wt = Ca .* (Ca >= 1);
-      if (sum (wt) > 0)
-        s.hue = sum (wt .* dh) / sum (wt);
+    if (strcmp (metric, "ciede2000"))
+      ## where both pixels are black (rgb input) both colours are 0 and so is
+      ## the difference: the formula is applied to the others alone
+      de = zeros (n, 1);
+      if (lab)
+        on = true (n, 1);
+      else
+        on = nzA | any (B != 0, 2);
       endif
+      de(on) = ciede2000 (labA(on,:), labB(on,:));
+      nits = NaN;
+    else
+      d = iA - ictcp (B * (k * nits));
+      de = 720 * sqrt (d(:,1).^2 + (d(:,2) / 2).^2 + d(:,3).^2);
     endif
+    des{i} = reshape (de, h, w);
+    if (nargout > 1)
+      if (isempty (mask))
+        m = nzA | any (B != 0, 2);
+      else
+        m = logical (mask(:));
+      endif
+      si = struct ("mean", NaN, "median", NaN, "p95", NaN, "hue", NaN, "npix", nnz (m),
+                   "metric", metric, "exposure", exposure, "nits", nits);
+      if (si.npix > 0)
+        v = de(m);
+        si.mean = mean (v);
+        si.median = median (v);
+        si.p95 = nth_element (v, ceil (0.95 * numel (v)));
+        a = labA(m,:);
+        b = labB(m,:);
+        Ca = sqrt (a(:,2).^2 + a(:,3).^2);
+        Cb = sqrt (b(:,2).^2 + b(:,3).^2);
+        dh = abs (atan2d (a(:,3), a(:,2)) - atan2d (b(:,3), b(:,2)));
+        dh = min (dh, 360 - dh);
+        dh(Cb < 1) = 90;
+        wt = Ca .* (Ca >= 1);
+        if (sum (wt) > 0)
+          si.hue = sum (wt .* dh) / sum (wt);
+        endif
+      endif
+      s(i) = si;
+    endif
+  endfor
+  if (several)
+    de = des;
+  else
+    de = des{1};
   endif
 endfunction
 
-## X as a double H x W x 3 array, or the error saying what it is
 function x = check_image (x, name, lab, fname)
   ok = (isa (x, "double") || isa (x, "single")) && isreal (x) && ! isempty (x);
   if (lab)
@@ -198,6 +236,24 @@ function x = check_image (x, name, lab, fname)
     x = reshape (x, rows (x), 1, 3);
   endif
 endfunction
+
+%!test
+%! ## several test images: each as compared alone, bit for bit
+%! [y, x] = ndgrid (linspace (-1, 1, 30), linspace (-1, 1, 36));
+%! disc = x .^ 2 + y .^ 2 < 0.5;
+%! ref = disc .* cat (3, 0.4, 0.2, 0.1) .* (1 + 3 * exp (-((x - 0.2) .^ 2 + y .^ 2) / 0.03));
+%! T = {1.2 * ref, ref(:,:,[2 1 3]), circshift(ref, [2 2]), zeros(30, 36, 3)};
+%! for metric = {"ciede2000", "itp"}
+%!   [de, s] = img_deltae (ref, T, "metric", metric{1});
+%!   assert (size (de), [1 4]);
+%!   for i = 1:4
+%!     [d1, s1] = img_deltae (ref, T{i}, "metric", metric{1});
+%!     assert (de{i}, d1);
+%!     assert (isequaln (s(i), s1));
+%!   endfor
+%! endfor
+%!error id=lafortune:badImage img_deltae (ones (2, 2, 3), {})
+%!error id=lafortune:badImage img_deltae (ones (2, 2, 3), {ones(2, 2, 3), ones(2, 3, 3)})
 
 %!test
 %! ## the 34 pairs of Sharma, Wu and Dalal (2005), Table 1: L1 a1 b1 L2 a2 b2 dE00

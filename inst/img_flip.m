@@ -58,6 +58,12 @@
 ## over all pixels, as the FLIP tool pools), @code{median} and @code{max}
 ## (over the mask).  The error is not symmetric in @var{ref} and @var{test}.
 ##
+## @var{test} may be a cell array of images: then @var{err} is a row of
+## their errors, @var{map} a cell array of their maps and @var{info} a
+## struct array, each the same as comparing that image alone; the
+## reference's part (its exposures, tone-mapped, filtered and converted
+## images, edges and points) is made once for all of them.
+##
 ## @example
 ## @group
 ## ref = exrread ("measured.exr");
@@ -83,11 +89,20 @@ function [err, map, info] = img_flip (ref, test, varargin)
   endif
   ldr = logical (ldr);
   ref = check_image (ref, "REF", ldr, fname);
-  test = check_image (test, "TEST", ldr, fname);
-  if (! isequal (size (ref), size (test)))
-    error ("lafortune:badImage", "%s: REF and TEST must have the same size, got %s and %s",
-           fname, mat2str (size (ref)), mat2str (size (test)));
+  several = iscell (test);
+  if (! several)
+    test = {test};
+  elseif (isempty (test))
+    error ("lafortune:badImage", "%s: TEST must be an image or a non-empty cell array of images",
+           fname);
   endif
+  for i = 1:numel (test)
+    test{i} = check_image (test{i}, "TEST", ldr, fname);
+    if (! isequal (size (ref), size (test{i})))
+      error ("lafortune:badImage", "%s: REF and TEST must have the same size, got %s and %s",
+             fname, mat2str (size (ref)), mat2str (size (test{i})));
+    endif
+  endfor
   [H, W, ~] = size (ref);
 
   ppd = opt.ppd;
@@ -109,11 +124,8 @@ function [err, map, info] = img_flip (ref, test, varargin)
     error ("lafortune:badOption",
            "%s: \"exposures\" must be an integer count of at least 1", fname);
   endif
-  nz = any (ref != 0, 3) | any (test != 0, 3);
   mask = opt.mask;
-  if (isempty (mask))
-    mask = nz;
-  else
+  if (! isempty (mask))
     if (! (islogical (mask) || (isnumeric (mask) && isreal (mask)
                                 && all (mask(:) == 0 | mask(:) == 1)))
         || ! isequal (size (mask), [H W]))
@@ -135,49 +147,96 @@ function [err, map, info] = img_flip (ref, test, varargin)
     info.start = e0;
     info.stop = e1;
     info.exposures = n;
-  endif
-
-  ## A pixel farther than the filters reach from every non-zero pixel has
-  ## error 0 (both images are 0 there in every exposure, and so are their
-  ## filtered colours and features): compute only the box around the
-  ## non-zero pixels, with a margin of zeros (so edges extended at the box
-  ## are the zeros beyond it).  This is exact, and fast on renders on a
-  ## black background.
-  map = zeros (H, W);
-  ri = find (any (nz, 2));
-  ci = find (any (nz, 1));
-  if (! isempty (ri))
-    ri = max (ri(1) - F.reach, 1):min (ri(end) + F.reach, H);
-    ci = max (ci(1) - F.reach, 1):min (ci(end) + F.reach, W);
-    R = single (ref(ri, ci, :));    # single precision, as the FLIP tool
-    T = single (test(ri, ci, :));   # computes: faster, and ample here
-    if (ldr)
-      sub = ldr_flip (srgb_linear (R), srgb_linear (T), F);
-    else
-      sub = zeros (numel (ri), numel (ci), "single");
-      step = 0;
-      if (n > 1)
-        step = (e1 - e0) / (n - 1);
-      endif
-      for e = e0 + step * (0:n-1)
-        sub = max (sub, ldr_flip (aces (R, 2 ^ e), aces (T, 2 ^ e), F));
-      endfor
+    step = 0;
+    if (n > 1)
+      step = (e1 - e0) / (n - 1);
     endif
-    map(ri, ci) = double (sub);
+    expo = e0 + step * (0:n-1);
+  else
+    expo = [];
   endif
 
-  info.mean_all = mean (map(:));
-  if (any (mask(:)))
-    v = map(mask);
-    err = mean (v);
-    info.median = median (v);
-    info.max = max (v);
+  ## the reference's part of the comparison, on the crop its own object
+  ## pixels give (a test whose object reaches beyond it gets its own crop:
+  ## the crop decides the filters' border, so it is always the pair's)
+  nzref = any (ref != 0, 3);
+  P = [];
+  nt = numel (test);
+  err = zeros (1, nt);
+  maps = cell (1, nt);
+  infos = repmat (info, 1, nt);
+  for i = 1:nt
+    nz = nzref | any (test{i} != 0, 3);
+    [ri, ci] = crop (nz, F.reach);
+    m = zeros (H, W);
+    if (! isempty (ri))
+      if (isempty (P) || ! isequal (P.ri, ri) || ! isequal (P.ci, ci))
+        P = prepare (ref, ri, ci, expo, ldr, F);
+      endif
+      m(ri, ci) = double (compare (P, test{i}(ri, ci, :), expo, ldr, F));
+    endif
+    pool = mask;
+    if (isempty (pool))
+      pool = nz;
+    endif
+    infos(i).mean_all = mean (m(:));
+    if (any (pool(:)))
+      v = m(pool);
+      err(i) = mean (v);
+      infos(i).median = median (v);
+      infos(i).max = max (v);
+    endif
+    maps{i} = m;
+  endfor
+  if (several)
+    map = maps;
+    info = infos;
   else
-    err = 0;
+    map = maps{1};
+    info = infos(1);
   endif
 endfunction
 
-## A validated image as double; uint8 (LDR only) scaled to [0, 1].
+## the rows and columns of the pixels within REACH of the non-zero ones
+function [ri, ci] = crop (nz, reach)
+  [H, W] = size (nz);
+  ri = find (any (nz, 2));
+  ci = find (any (nz, 1));
+  if (! isempty (ri))
+    ri = max (ri(1) - reach, 1):min (ri(end) + reach, H);
+    ci = max (ci(1) - reach, 1):min (ci(end) + reach, W);
+  endif
+endfunction
+
+## the reference's part on a crop: per exposure, its opponent colours, their
+## filtered values and colours, and its edges and points
+function P = prepare (ref, ri, ci, expo, ldr, F)
+  P = struct ("ri", ri, "ci", ci);
+  R = single (ref(ri, ci, :));    # single precision, as the FLIP tool
+  if (ldr)
+    P.side = {side(srgb_linear (R), F)};
+  else
+    P.side = cell (1, numel (expo));
+    for j = 1:numel (expo)
+      P.side{j} = side (aces (R, 2 ^ expo(j)), F);
+    endfor
+  endif
+endfunction
+
+## the test's part on the same crop, and the per-pixel error: the largest
+## over the exposures
+function sub = compare (P, T, expo, ldr, F)
+  T = single (T);                 # computes: faster, and ample here
+  if (ldr)
+    sub = ldr_flip (P.side{1}, side (srgb_linear (T), F), F);
+  else
+    sub = zeros (numel (P.ri), numel (P.ci), "single");
+    for j = 1:numel (expo)
+      sub = max (sub, ldr_flip (P.side{j}, side (aces (T, 2 ^ expo(j)), F), F));
+    endfor
+  endif
+endfunction
+
 function img = check_image (img, name, ldr, fname)
   if (ldr)
     want = "real double, single or uint8 H x W x 3 array";
@@ -381,39 +440,26 @@ function [e, p] = features (Y, F)
 endfunction
 
 ## LDR-FLIP error map of two linear RGB images in [0, 1].
-function map = ldr_flip (R, T, F)
-  [H, W, ~] = size (R);
+## one image's part of LDR-FLIP: its filtered colours (and their Hunt-adjusted
+## CIELAB values) and its edges and points
+function S = side (X, F)
+  [H, W, ~] = size (X);
   N = H * W;
-  zr = reshape (R, N, 3) * F.A';
-  zt = reshape (T, N, 3) * F.A';
+  z = reshape (X, N, 3) * F.A';
+  S.f = csf (z, H, W, F);
+  S.lab = lab_of (S.f, F);
+  [S.e, S.p] = features (reshape (z(:,1), H, W) / 116, F);
+endfunction
 
-  ## colour: filtered opponent colours back to linear RGB, clamped to the
-  ## gamut, Hunt-adjusted CIELAB, HyAB; only where the two differ (the
-  ## error is 0 elsewhere)
-  fr = csf (zr, H, W, F);
-  ft = csf (zt, H, W, F);
-  k = any (fr != ft, 2);
-  if (all (k))
-    d = hyab (lab_of (fr, F), lab_of (ft, F));
-    dc = min (d * F.lo(1) + F.lo(2), d * F.hi(1) + F.hi(2));
-  else
-    dc = zeros (N, 1);
-    if (any (k))
-      d = hyab (lab_of (fr(k,:), F), lab_of (ft(k,:), F));
-      dc(k) = min (d * F.lo(1) + F.lo(2), d * F.hi(1) + F.hi(2));
-    endif
-  endif
-
-  ## features of the luminance (white-relative Y, in [0, 1])
-  [er, pr] = features (reshape (zr(:,1), H, W) / 116, F);
-  [et, pt] = features (reshape (zt(:,1), H, W) / 116, F);
-  df = sqrt (max (abs (er - et), abs (pr - pt)) / sqrt (2));   # exponent qf = 0.5
-
+function map = ldr_flip (r, t, F)
+  [H, W] = size (r.e);
+  d = hyab (r.lab, t.lab);
+  dc = min (d * F.lo(1) + F.lo(2), d * F.hi(1) + F.hi(2));
+  dc(! any (r.f != t.f, 2)) = 0;
+  df = sqrt (max (abs (r.e - t.e), abs (r.p - t.p)) / sqrt (2));   # exponent qf = 0.5
   map = min (max (reshape (dc, H, W) .^ (1 - df), 0), 1);
 endfunction
 
-## Filtered opponent colours (N x 3) -> linear RGB clamped to [0, 1] ->
-## Hunt-adjusted CIELAB.
 function lab = lab_of (Z, F)
   lab = hunt_lab (min (max (Z * F.Ainv', 0), 1) * F.T');
 endfunction
@@ -468,6 +514,25 @@ endfunction
 %! ## options are case-insensitive; single images give the same map
 %! [~, map3] = img_flip (single (ref), single (test), "PPD", 67.02);
 %! assert (map3, map, 1e-5);
+
+%!test
+%! ## several test images: each as compared alone, bit for bit, also one
+%! ## whose object reaches beyond the reference's (a crop of its own)
+%! far = ref;
+%! far(1:3,1:3,:) = 0.7;
+%! T = {test, 0.9 * ref, far, single(ref)};
+%! [err, map, info] = img_flip (ref, T);
+%! assert (size (err), [1 4]);
+%! for i = 1:4
+%!   [e1, m1, i1] = img_flip (ref, T{i});
+%!   assert (err(i), e1);
+%!   assert (map{i}, m1);
+%!   assert (info(i), i1);
+%! endfor
+%! assert (err(4), 0);
+%! [e2, m2] = img_flip (ref, {test, far}, "ldr", true, "mask", true (40, 48));
+%! assert (e2, [img_flip(ref, test, "ldr", true, "mask", true (40, 48)), ...
+%!              img_flip(ref, far, "ldr", true, "mask", true (40, 48))]);
 
 %!test
 %! ## the default exposures follow the rule on the object pixels
@@ -542,6 +607,8 @@ endfunction
 %! [~, m3] = img_flip (u, v, "ldr", true, "ppd", 20);
 %! assert (any (abs (m3(:) - m1(:)) > 1e-3));
 
+%!error id=lafortune:badImage img_flip (ones (2, 2, 3), {})
+%!error id=lafortune:badImage img_flip (ones (2, 2, 3), {ones(2, 2, 3), ones(2, 3, 3)})
 %!error <Invalid call> img_flip (ones (4, 4, 3))
 %!error id=lafortune:badImage img_flip (ones (4, 4), ones (4, 4))
 %!error <H x W x 3> img_flip (ones (4, 4, 4), ones (4, 4, 4))
