@@ -148,35 +148,43 @@ function [img, info] = pov_render (scene, material, varargin)
     if (th)
       args = [args, sprintf(" +WT%d", th)];
     endif
-    if (np == 1)
-      cmd = sprintf ("cd %s && %s %s 2>&1", shell_quote (d), shell_quote (exe), args);
-      t0 = tic ();
-      [st, out] = system (cmd);
-      rtime = toc (t0);
-    else
-      e = round (linspace (0, K, np + 1));
-      run = "";
-      for j = 1:np
-        run = [run, sprintf("(%s %s +SF%d +EF%d > log%d.txt 2>&1; echo $? > status%d.txt) & ",
-                            shell_quote (exe), args, e(j) + 1, e(j+1), j, j)];
-      endfor
-      cmd = sprintf ("cd %s && { %swait; }", shell_quote (d), run);
-      t0 = tic ();
-      system (cmd);
-      rtime = toc (t0);
-      st = 0;
-      out = "";
-      for j = 1:np
-        sj = str2double (fileread_or (fullfile (d, sprintf ("status%d.txt", j)), "1"));
-        oj = fileread_or (fullfile (d, sprintf ("log%d.txt", j)), "");
-        if (sj != 0 && st == 0)
-          st = sj;
-          out = [oj, out];
-        else
-          out = [out, oj];
-        endif
-      endfor
-    endif
+    ## POV-Ray gives up when its render threads do not start within its
+    ## own time limit, which a loaded machine can exceed: that run is tried
+    ## again (at most 3 times); any other failure is an error at once
+    for attempt = 1:3
+      if (np == 1)
+        cmd = sprintf ("cd %s && %s %s 2>&1", shell_quote (d), shell_quote (exe), args);
+        t0 = tic ();
+        [st, out] = system (cmd);
+        rtime = toc (t0);
+      else
+        e = round (linspace (0, K, np + 1));
+        run = "";
+        for j = 1:np
+          run = [run, sprintf("(%s %s +SF%d +EF%d > log%d.txt 2>&1; echo $? > status%d.txt) & ",
+                              shell_quote (exe), args, e(j) + 1, e(j+1), j, j)];
+        endfor
+        cmd = sprintf ("cd %s && { %swait; }", shell_quote (d), run);
+        t0 = tic ();
+        system (cmd);
+        rtime = toc (t0);
+        st = 0;
+        out = "";
+        for j = 1:np
+          sj = str2double (fileread_or (fullfile (d, sprintf ("status%d.txt", j)), "1"));
+          oj = fileread_or (fullfile (d, sprintf ("log%d.txt", j)), "");
+          if (sj != 0 && st == 0)
+            st = sj;
+            out = [oj, out];
+          else
+            out = [out, oj];
+          endif
+        endfor
+      endif
+      if (st == 0 || isempty (strfind (out, "waiting for worker thread startup")))
+        break;
+      endif
+    endfor
     if (K)
       exr = arrayfun (@(k) fullfile (d, sprintf ("image%0*d.exr", numel (num2str (K)), k)),
                       1:K, "UniformOutput", false);

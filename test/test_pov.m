@@ -289,6 +289,40 @@
 %! end_unwind_protect
 
 %!test
+%! ## POV-Ray's worker threads not started in time (a loaded machine): the
+%! ## run is tried again; twice here, then the real povray renders.  A fake
+%! ## that always times out fails after three tries with POV-Ray's message
+%! d = tempname (); mkdir (d);
+%! fake = fullfile (d, "povray");
+%! fid = fopen (fake, "w");
+%! fprintf (fid, ["#!/bin/sh\nn=$(cat '%s/tries' 2>/dev/null || echo 0); echo $((n + 1)) > '%s/tries'\n", ...
+%!               "if [ $n -lt 2 ]; then echo 'Timed out waiting for worker thread startup'; exit 1; fi\n", ...
+%!               "exec povray \"$@\"\n"], d, d);
+%! fclose (fid);
+%! system (sprintf ("chmod +x '%s'", fake));
+%! unwind_protect
+%!   sc = scene_make ("sphere", "size", [8 8], "spp", 1);
+%!   img = pov_render (sc, m1, "povray", fake, "entries", 8);
+%!   assert (str2double (fileread (fullfile (d, "tries"))), 3);
+%!   assert (img, pov_render (sc, m1, "entries", 8));
+%!   unlink (fullfile (d, "tries"));
+%!   fid = fopen (fake, "w");
+%!   fprintf (fid, "#!/bin/sh\necho x >> '%s/tries'; echo 'Timed out waiting for worker thread startup'; exit 1\n", d);
+%!   fclose (fid);
+%!   try
+%!     pov_render (sc, m1, "povray", fake, "entries", 8);
+%!     error ("no error");
+%!   catch err
+%!     assert (err.identifier, "lafortune:povFailed");
+%!     assert (! isempty (strfind (err.message, "worker thread startup")), err.message);
+%!   end_try_catch
+%!   assert (numel (strsplit (strtrim (fileread (fullfile (d, "tries"))), "\n")), 3);
+%! unwind_protect_cleanup
+%!   confirm_recursive_rmdir (false, "local");
+%!   rmdir (d, "s");
+%! end_unwind_protect
+
+%!test
 %! ## keep the scene file
 %! sc = scene_make ("sphere", "size", [16 16], "spp", 1);
 %! f = [tempname() ".pov"];
