@@ -100,10 +100,19 @@ octrun = $(OCT) --path $(CURDIR)/inst --path $(CURDIR)/src --path $(CURDIR)/scri
 # POV-Ray's threads per render: all cores with one job, one per job with make -j N
 pov_threads = $(if $(filter command line environment,$(origin POV_THREADS)),$(POV_THREADS),$\
   $(if $(filter-out -j1,$(filter -j%,$(MAKEFLAGS))),1,$(POV_THREADS)))
-# one per-material step (scripts/repro_step.m writes its JSON record): $(1) step, $(2) material
+# one Octave process per material: a step's rule only adds the step to the
+# material's queue, $(1)/queue/$(2) ($(1) the folder of the run, $(2) the
+# material), and the material's run (scripts/repro_material.m, with the
+# environment $(3)) does the queued
+# steps in order (repro_step writes each one's JSON record), so that the MERL
+# file is read, the scene traced and optim loaded once.  A rerun with nothing
+# out of date queues nothing and starts no Octave.
 # (the comma of the call is $(comma): a bare one would end octrun's argument)
 comma := ,
-octstep = POV_THREADS=$(pov_threads) $(call octrun,repro_step ("$(1)"$(comma) "$(2)"))
+queue_of = $(1)/queue/$(2)
+queue_add = mkdir -p $(1)/queue && echo $(3) >> $(call queue_of,$(1),$(2))
+octmat = if [ -s $(call queue_of,$(1),$(2)) ]; then $(3) POV_THREADS=$(pov_threads) $\
+  $(call octrun,repro_material ("$(2)"$(comma) "$(call queue_of,$(1),$(2))")); fi
 
 # ---- the pipeline's files and steps, and which project files each step may
 # call: build/deps.mk, written by scripts/repro_deps.m from the one table of
@@ -149,7 +158,7 @@ $(R)/$(FILE_data): FORCE
 # settings and the mesh
 define repro_rule
 $(R)/$(FILE_$(1)): $(if $(UP_$(1)),$(call ups_of,$(1),%,$(R)),$(R)/$(FILE_data) $(R)/$(FILE_settings) $(MESH)) $$(DEPS_$(SCRIPT_$(1)))
-	@$$(call octstep,$(1),$$*)
+	@$$(call queue_add,$(R),$$*,$(1))
 endef
 $(foreach s,$(REPRO_STEPS),$(eval $(call repro_rule,$(s))))
 
@@ -158,13 +167,19 @@ $(foreach s,$(REPRO_STEPS),$(eval $(call repro_rule,$(s))))
 STUDY_EFF := $(if $(filter command line environment,$(origin STUDY)),$(STUDY),$\
   $(if $(filter 1,$(QUICK)),$(STUDY_QUICK),$(STUDY)))
 STUDY_ON := $(if $(filter 1,$(STUDY_EFF)),1,$(if $(filter auto,$(STUDY_EFF)),$(if $(MESH),,1)))
-STEP_OUT := $(foreach m,$(MATS),$(foreach s,$(filter-out $(if $(STUDY_ON),,study),$(REPRO_STEPS)),$\
-  $(call file_of,$(s),$(m),$(R))))
+mat_out = $(foreach s,$(filter-out $(if $(STUDY_ON),,study),$(REPRO_STEPS)),$(call file_of,$(s),$(1),$(R)))
+STEP_OUT := $(foreach m,$(MATS),$(call mat_out,$(m)))
 
-$(R)/$(FILE_figures): $(STEP_OUT) $(DEPS_repro_figures)
+# a material's run: its queued steps, in one process
+.PHONY: $(addprefix repro-,$(MATS))
+$(foreach m,$(MATS),$(eval repro-$(m): $(call mat_out,$(m))))
+$(addprefix repro-,$(MATS)):
+	@$(call octmat,$(R),$(patsubst repro-%,%,$@))
+
+$(R)/$(FILE_figures): $(STEP_OUT) $(DEPS_repro_figures) | $(addprefix repro-,$(MATS))
 	@$(call octrun,repro_figures ())
 
-$(R)/$(FILE_report) $(R)/$(FILE_summary) &: $(R)/$(FILE_figures) $(STEP_OUT) $(DEPS_repro_report)
+$(R)/$(FILE_report) $(R)/$(FILE_summary) &: $(R)/$(FILE_figures) $(STEP_OUT) $(DEPS_repro_report) | $(addprefix repro-,$(MATS))
 	@$(call octrun,repro_report ())
 endif
 
@@ -192,7 +207,7 @@ PARALLEL_OPTS ?=
 PARALLEL_ENV ?= OPENBLAS_CORETYPE OPENBLAS_L2_SIZE OPENBLAS_NUM_THREADS OMP_NUM_THREADS
 # a material's folder; one step of a material: $(1) step, $(2) material
 dbdir = $(call file_of,db_material,$(1),$(DB))
-dbstep = RESULTS=$(call dbdir,$(2)) DATA_DIR=$(DB_DATA) DATABASE=1 $(call octstep,$(1),$(2))
+dbrun = $(call octmat,$(DB),$(1),RESULTS=$(call dbdir,$(1)) DATA_DIR=$(DB_DATA) DATABASE=1)
 # the record of step $(1) of material $(2)
 dbrec = $(call file_of,$(1),$(2),$(call dbdir,$(2)))
 
@@ -201,13 +216,15 @@ dbrec = $(call file_of,$(1),$(2),$(call dbdir,$(2)))
 define db_step
 $(call dbrec,$(2),$(1)): $(if $(UP_$(2)),$(call ups_of,$(2),$(1),$(call dbdir,$(1))),$\
   $(call file_of,merl,$(1),$(MERL_DIR)) $(DB)/$(FILE_settings) $(MESH)) $$(DEPS_$(SCRIPT_$(2)))
-	@$$(call dbstep,$(2),$(1))
+	@$$(call queue_add,$(DB),$(1),$(2))
 
 endef
+# db-MATERIAL: the material's queued steps, in one process
 define db_material
 $(foreach s,$(DB_STEPS),$(call db_step,$(1),$(s)))
 .PHONY: db-$(1)
-db-$(1): $(call dbrec,$(lastword $(DB_STEPS)),$(1))
+db-$(1): $(foreach s,$(DB_STEPS),$(call dbrec,$(s),$(1)))
+	@$$(call dbrun,$(1))
 endef
 ifdef FILE_fit
 $(foreach m,$(DB_MATS),$(eval $(call db_material,$(m))))
@@ -249,7 +266,7 @@ $(DB)/$(FILE_materials): FORCE
 	@mkdir -p $(DB) && printf '%s\n' $(DB_MATS) > $@.tmp && \
 	  if cmp -s $@.tmp $@; then rm -f $@.tmp; else mv -f $@.tmp $@; fi
 
-$(DB_OUT) &: $(DB)/$(FILE_materials) $(foreach m,$(DB_MATS),$(call dbrec,$(lastword $(DB_STEPS)),$(m))) $(DEPS_db_report)
+$(DB_OUT) &: $(DB)/$(FILE_materials) $(foreach m,$(DB_MATS),$(call dbrec,$(lastword $(DB_STEPS)),$(m))) $(DEPS_db_report) | $(addprefix db-,$(DB_MATS))
 	@RESULTS=$(DB) DATABASE=1 MATERIALS="$(DB_MATS)" $(call octrun,db_report ())
 endif
 

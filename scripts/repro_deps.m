@@ -14,7 +14,7 @@
 ## src/*.cc.  Like a compiler's -MM: found from the code (every name in a
 ## line that is not a comment or a test block that is also the name of a
 ## project function), so a change to a function re-runs only the steps that
-## may call it.  Every step also depends on repro_step (the runner) and what
+## may call it.  Every step also depends on repro_material and repro_step (the runners) and what
 ## it calls besides the steps' scripts.
 ## @end deftypefn
 function repro_deps (file)
@@ -53,10 +53,10 @@ function repro_deps (file)
   endfor
   ## the runner and the table of steps and files name every step's script:
   ## they depend on what they call besides them
-  for t = find (ismember (names, {"repro_step", "repro_files"}))
+  for t = find (ismember (names, {"repro_material", "repro_step", "repro_files"}))
     uses{t} = setdiff (uses{t}, find (ismember (names, steps)));
   endfor
-  runner = closure (find (strcmp (names, "repro_step")), uses);
+  runner = closure (find (ismember (names, {"repro_material", "repro_step"})), uses);
   for s = steps
     k = find (strcmp (names, s{1}));
     if (isempty (k))

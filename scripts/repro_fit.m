@@ -43,7 +43,7 @@
 function R = repro_fit (material)
   c = repro_config ();
   warning ("off", "lafortune:notConverged");
-  b = merl_read (repro_files ("merl", c.data_dir, material));
+  b = repro_merl (c, material);
   ## every method's table and fit options (an unknown name is an error
   ## there), each table made once (deterministic: the same as made again);
   ## the errors are reported on the tables of the methods without their

@@ -50,7 +50,7 @@ function R = repro_judge (material)
     R.lights = {};                      # jsonencode aborts Octave on an empty struct array
     return;
   endif
-  b = merl_read (repro_files ("merl", c.data_dir, material));
+  b = repro_merl (c, material);
   d = fileparts (repro_files ("judge_measured", c.results, material));
   repro_mkdir (d);
   for l = 1:nl

@@ -35,7 +35,9 @@ function R = repro_render_fits (material)
   refpov = exrread ([repro_files("measured_pov", c.results, material) ".exr"]);  # POV-Ray
   R = struct ("material", material, "antialias", c.pov_aa);
   models = repro_fits (c, material);   # METHODS x LOBES, and the published fit
-  cache = [];         # rt_render's trace, made by the first fit's render, shaded by the rest
+  ## rt_render's trace: the measured render's, when that ran in this process
+  ## (repro_material), else made by the first fit's render; the rest shade
+  cache = repro_trace (scene);
   done = {};          # the renders, compared at the end: each reference's part once
   for method = fieldnames (models)'
     mth = method{1};
@@ -56,6 +58,7 @@ function R = repro_render_fits (material)
       done(end+1,:) = {mth, k, img, img_rt, pinfo, rinfo};
     endfor
   endfor
+  repro_trace (scene, []);            # the trace is not needed after this step
   if (isempty (done))
     return;
   endif

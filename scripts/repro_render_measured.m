@@ -15,12 +15,13 @@
 ## @end deftypefn
 function R = repro_render_measured (material)
   c = repro_config ();
-  b = merl_read (repro_files ("merl", c.data_dir, material));
+  b = repro_merl (c, material);
   scene = repro_scene (c);
   printf ("reproduce: [%s] rendering the measured data (rt_render, %d x %d, %d spp)\n",
           material, scene.width, scene.height, scene.spp);
   fflush (stdout);
-  [img, info] = rt_render (scene, b, "progress", true);
+  [img, info, cache] = rt_render (scene, b, "progress", true);
+  repro_trace (scene, cache);         # the fits' renders shade from this trace
   base = repro_files ("measured", c.results, material);
   repro_mkdir (fileparts (base));
   exrwrite ([base ".exr"], img);

@@ -16,7 +16,7 @@
 ## @end deftypefn
 function R = repro_spp (material)
   c = repro_config ();
-  b = merl_read (repro_files ("merl", c.data_dir, material));
+  b = repro_merl (c, material);
   ref = exrread ([repro_files("measured", c.results, material) ".exr"]);
   mj = jsondecode (fileread (repro_files ("render_measured", c.results, material)));
   scene = repro_scene (c);

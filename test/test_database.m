@@ -491,8 +491,12 @@
 %!   [~, cmd] = __make (top, db, merl, via (jl), true);
 %!   __bg (cmd, pidf, statf);
 %!   sshpid = str2double (fileread (fullfile (sshd, "sshd.pid")));
-%!   victim = @() __descendant (sshpid, 'repro_step \("render_fits", "red-plastic"\)');
-%!   assert (__poll (@() victim () > 0, 300), "no remote Octave rendered red-plastic's fits within 300 s");
+%!   ## the material's one Octave process, once its fit record is written
+%!   victim = @() __descendant (sshpid, 'repro_material \("red-plastic"');
+%!   mdir = fullfile (db, "materials", "red-plastic");
+%!   halfway = @() exist (fullfile (mdir, "fit", "red-plastic.json"), "file") == 2 ...
+%!                 && exist (fullfile (mdir, "render", "red-plastic-fits.json"), "file") != 2;
+%!   assert (__poll (@() halfway () && victim () > 0, 300), "no remote Octave had fitted red-plastic within 300 s");
 %!   assert (system (sprintf ("kill -KILL %d", victim ())), 0);
 %!   assert (__poll (@() exist (statf, "file") == 2, 600), "the run did not end within 600 s");
 %!   log = fileread ([statf ".log"]);

@@ -25,13 +25,22 @@
 ## @var{G} is what does not depend on the light (the samples' points,
 ## normals toward the viewer, view directions, the objects and faces in
 ## the view): pass it back for another light of the same view, and the
-## rays are not cast again.
+## rays are not cast again.  Without @var{G}, the geometry of the last
+## view cast in this Octave session is used again when @var{scene} and
+## @var{cam} are the same (every fit of a material rendered in one process
+## casts the view once).
 ## @end deftypefn
 function [S, G] = pov_cast (scene, cam, L, G = [])
+  persistent last;
   ob = scene.objects;
   nob = numel (ob);
   if (isempty (G))
-    G = cast_view (scene, cam);
+    if (! isempty (last) && isequal (last.cam, cam) && isequal (last.scene, scene))
+      G = last.G;
+    else
+      G = cast_view (scene, cam);
+      last = struct ("scene", scene, "cam", cam, "G", G);
+    endif
   endif
   P = G.P;
   N = G.N;
