@@ -63,7 +63,10 @@
 ## leaves @code{"relative"}, @code{"log"} and @code{"psnr"} unchanged.
 ## @var{info} holds @code{metric}, @code{delta} (1 x 3), @code{degree} (that
 ## power of c), @code{ss} (1 x 3 weighted sums of squares), @code{norm}
-## (their divisor), @code{peak} (@code{"psnr"}; NaN otherwise) and
+## (their divisor), @code{peak} (@code{"psnr"}; NaN otherwise),
+## @code{relative} (1 x 3: @var{e} over the error of the model that is 0
+## everywhere, 0 where @var{e} is 0; for @code{"plain"} the rmse relative to
+## the rms of the data, the fitters' @code{rel_rmse}) and
 ## @code{spec}, the metric's definition as a least-squares fitter uses it:
 ## per-sample weights @code{spec.w} (N x 3), transformed data @code{spec.ty}
 ## (N x 3) and handles @code{spec.t (f, c)}, @code{spec.dt (f, c)} (the
@@ -95,8 +98,12 @@ function [e, info] = lafortune_error (model, S, metric = "plain")
     ss(c) = spec.ss (f(:,c), c);
   endfor
   e = spec.finish (ss);
-  info = struct ("metric", metric, "delta", spec.delta, "degree", spec.degree,
-                 "ss", ss, "norm", spec.norm, "peak", spec.peak, "spec", spec);
+  if (nargout > 1)
+    ss0 = arrayfun (@(c) spec.ss (zeros (rows (f), 1), c), 1:3);
+    info = struct ("metric", metric, "delta", spec.delta, "degree", spec.degree,
+                   "ss", ss, "norm", spec.norm, "peak", spec.peak,
+                   "relative", relative_error (e, spec.finish (ss0)), "spec", spec);
+  endif
 endfunction
 
 %!demo
@@ -132,6 +139,14 @@ endfunction
 %! C = @(x, c) (x + d(c)) ^ (1/3);
 %! assert (lafortune_error (m, S, "cuberoot"),
 %!         sqrt ([(C(0.1,1) - C(0.2,1))^2, (C(0.2,2) - C(0.3,2))^2, (C(0.4,3) - C(0.2,3))^2 + (C(0.4,3) - C(0.5,3))^2] / 2), 1e-14);
+
+%!test
+%! ## relative: over the error of the zero model, the rms of the data for plain
+%! [e, info] = lafortune_error (m, S);
+%! assert (info.relative, e ./ sqrt ([0.05 0.13 0.29] / 2), 1e-15);
+%! z = brdf_model ("lafortune", "rho_d", 0);
+%! [e, info] = lafortune_error (m, S, "log");
+%! assert (info.relative, e ./ lafortune_error (z, S, "log"), 1e-15);
 
 %!test
 %! ## weights: the mean is weighted, a zero weight drops the sample

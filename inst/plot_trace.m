@@ -146,7 +146,7 @@ function [T, lt, hi] = read_fit (f, i, fname)
     f = f.trace;
   endif
   if (isnumeric (f) && ndims (f) == 3 && size (f, 1) == 3 && size (f, 3) == 2)
-    f = arrayfun (@(c) squeeze (f(c,:,:)), 1:3, "uniformoutput", false);
+    f = arrayfun (@(c) reshape (f(c,:,:), [], 2), 1:3, "uniformoutput", false);
   endif
   if (! one_trace (f))
     error ("lafortune:badOption",

@@ -172,7 +172,7 @@ function db_report ()
           v = [v, {mean(e.rmse(k,:)), mean(e.log_rmse(k,:)), mean(e.cos_rmse(k,:))}];
         endfor
         v = [v, heldout_cells(X, m{1}, i, j, nj)];
-        md = lafortune_import ([repro_files("model", D(i).root, mats{i}, m{1}, k) ".json"]);
+        md = r.parameters(k);             # the fit record's parameters
         alb = "";
         if (isfield (r, "albedo"))
           alb = max (r.albedo(k,:));

@@ -79,9 +79,9 @@ function repro_figures ()
                       repro_files ("fig_heldout", c.results, mat), false);
     endif
     Fi = jsondecode (fileread (repro_files ("fit", c.results, mat)));
-    ## the step's record: trace(ch).time, .rmse per channel
-    tr = Fi.inplane.trace;
-    fits{i} = struct ("trace", {arrayfun(@(t) [t.time(:), t.rmse(:)], tr(:)', "uniformoutput", false)},
+    ## the step's record: the traces as brdf_fit gives them (plot_trace
+    ## reads them as jsondecode returns them)
+    fits{i} = struct ("trace", {Fi.inplane.trace},
                       "lobe_time", Fi.inplane.lobe_time, "history", Fi.inplane.errors.inplane.rmse);
   endfor
   ## fit error against run time

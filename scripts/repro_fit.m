@@ -30,15 +30,18 @@
 ## on each method's table, TABLE a method of METHODS without its model;
 ## cos_rmse is weighted by cos theta_i as in Ngan et
 ## al. 2005; the models themselves are in their files, MATERIAL-METHOD-K.json),
+## @code{parameters} (1 x K struct array: each model's parameters, the fields of
+## its type, as in its file; the reports read them here),
 ## @code{params} (1 x K: the numbers a model holds, those of its type's
 ## fields, @code{brdf_model (type).fields}), @code{json_bytes} (1 x K: the
 ## size of its JSON file), for the types brdf_fit reports an albedo of
 ## @code{albedo} (K x 3: the largest directional albedo over the incidence
 ## angles brdf_fit checks, 0, 5, ..., 85 and 89 degrees; above 1 the fit
 ## reflects more light than it receives),
-## and @code{trace} (3 x 1 struct
-## array, one per channel: @code{channel}, @code{time}, @code{rmse}: the
-## error of the best fit so far against run time).
+## and @code{trace} (1 x 3 cell, one per channel R, G, B: K x 2 arrays
+## [seconds, rmse], the error of the best fit so far against run time, as
+## brdf_fit's @code{info.trace}, thinned to about 200 rows; jsondecode reads
+## them back as a cell, or as a 3 x K x 2 array when the K are equal).
 ## @end deftypefn
 function R = repro_fit (material)
   c = repro_config ();
@@ -85,6 +88,11 @@ function R = repro_fit (material)
       lafortune_export (m, [base ".json"], "json");
       lafortune_export (m, [base ".txt"], "text");
       lafortune_export (m, [base ".brdf"], "brdfexplorer");
+      ## its parameters, for the reports (which read them here, not from
+      ## the files again)
+      for f = def.fields
+        r.parameters(k).(f{1}) = m.(f{1});
+      endfor
       ## its size: the numbers of its type's fields, and its JSON file
       r.params(k) = sum (cellfun (@(f) numel (m.(f)), def.fields));
       r.json_bytes(k) = dir ([base ".json"]).bytes;
@@ -104,12 +112,12 @@ function R = repro_fit (material)
         r.albedo(k,:) = info.albedo_lobes(k,:);
       endfor
     endif
-    ## the error-against-time traces, thinned for the record
-    chn = "RGB";
+    ## the error-against-time traces, thinned for the record, in their one
+    ## shape: per channel K x 2 [seconds, rmse], as brdf_fit gives them
+    r.trace = cell (1, 3);
     for ch = 1:3
       T = info.trace{ch};
-      keep = unique ([1:max(1, floor (rows (T) / 200)):rows(T), rows(T)]);
-      r.trace(ch,1) = struct ("channel", chn(ch), "time", T(keep,1)', "rmse", T(keep,2)');
+      r.trace{ch} = T(unique ([1:max(1, floor (rows (T) / 200)):rows(T), rows(T)]),:);
     endfor
     R.(mth) = r;
     printf ("reproduce: [%s] %s rmse (mean RGB) for %s lobes: %s; %.1f s\n", material, mth,
@@ -120,13 +128,9 @@ endfunction
 ## the errors of model M on the table S, by lafortune_error (the one place
 ## where the metrics are defined)
 function e = model_errors (m, S)
-  e.rmse = lafortune_error (m, S, "plain");
-  e.rel_rmse = e.rmse ./ max (lafortune_error (zero_model (m), S, "plain"), realmin);
+  [e.rmse, i] = lafortune_error (m, S, "plain");
+  e.rel_rmse = i.relative;
   e.log_rmse = lafortune_error (m, S, "log");
   e.cos_rmse = lafortune_error (m, S, "cosine");
 endfunction
 
-## the model that is 0 everywhere: its plain error is the rms of the data
-function z = zero_model (m)
-  z = brdf_model ("lafortune", "rho_d", 0);      # no lobe
-endfunction

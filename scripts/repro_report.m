@@ -205,7 +205,12 @@ function repro_report ()
     mat = c.materials{i};
     F = D.(fieldname (mat)).F;
     for ch = 1:3
-      T = [F.inplane.trace(ch).time(:), F.inplane.trace(ch).rmse(:)];
+      T = F.inplane.trace;                # K x 2 per channel, as jsondecode returns them
+      if (iscell (T))
+        T = T{ch};
+      else
+        T = reshape (T(ch,:,:), [], 2);
+      endif
       fin = T(end,2);
       t10 = T(find (T(:,2) <= 1.1 * fin, 1), 1);
       t1 = T(find (T(:,2) <= 1.01 * fin, 1), 1);

@@ -289,7 +289,16 @@
 %!   ## every step record has the same head and reads with jsondecode
 %!   F = jsondecode (fileread (fullfile (db, "materials", "red-plastic", "fit", "red-plastic.json")));
 %!   assert ({F.material, F.step, F.status}, {"red-plastic", "fit", "ok"});
-%!   assert (size (F.inplane.trace), [3 1]);
+%!   ## the traces in brdf_fit's shape (K x 2 per channel), as jsondecode reads them
+%!   tr = F.inplane.trace;
+%!   assert ((iscell (tr) && numel (tr) == 3 && all (cellfun (@columns, tr) == 2))
+%!           || (size (tr, 1) == 3 && size (tr, 3) == 2));
+%!   ## the models' parameters in the record, as in their files (the report reads them here)
+%!   md = lafortune_import (fullfile (db, "materials", "red-plastic", "fit", "red-plastic-inplane-2.json"));
+%!   pr = F.inplane.parameters(2);
+%!   for f = {"rho_d", "Cxy", "Cz", "e"}
+%!     assert (reshape (pr.(f{1}), [], 3), md.(f{1}), 1e-14 * max (abs (md.(f{1})(:))));
+%!   endfor
 %!   assert (all (diff (mean (F.inplane.errors.inplane.rmse, 2)) <= 1e-12));
 %!   ## a rerun does no work
 %!   t0 = dir (fullfile (db, "table.csv")).datenum;

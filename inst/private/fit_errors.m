@@ -26,7 +26,7 @@ function info = report_errors (info, rep, ss, ss0, hss, fitted, weight)
   per = @(e) ifelse_nan (e, fitted);
   info.rmse = per (rep.plain.finish (ss.plain));
   rms0 = rep.plain.finish (ss0);
-  info.rel_rmse = per (info.rmse ./ max (rms0, realmin) .* (info.rmse > 0));
+  info.rel_rmse = per (relative_error (info.rmse, rms0));
   info.log_rmse = per (rep.log.finish (ss.log));
   if (isfield (rep, "cosine"))
     info.cos_rmse = per (rep.cosine.finish (ss.cosine));
