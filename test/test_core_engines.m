@@ -266,3 +266,68 @@
 %! assert (st == 0, "%s", out);
 %! assert (! isempty (strfind (out, "same 1 1, lafortune:noOctFile")), out);
 %! assert (numel (strfind (out, "does not work")) == 1, "%s", out);
+
+%!function varargout = __octave_model (fn)
+%!  ## FN () with the oct-file __model_core__ off the path
+%!  d = fileparts (which ("__model_core__"));
+%!  assert (! isempty (d), "the oct-file __model_core__ is not built (make -C src)");
+%!  old = path ();
+%!  dirs = strsplit (old, pathsep ());
+%!  hide = dirs(strcmp (cellfun (@canonicalize_file_name, dirs, "UniformOutput", false),
+%!                      canonicalize_file_name (d)));
+%!  unwind_protect
+%!    rmpath (hide{:});
+%!    assert (exist ("__model_core__", "file"), 0);
+%!    [varargout{1:nargout}] = fn ();
+%!  unwind_protect_cleanup
+%!    path (old);
+%!  end_unwind_protect
+%!  assert (exist ("__model_core__", "file"), 3);
+%!endfunction
+
+%!test
+%! ## the physically based models' values for shading: material_x calls the
+%! ## oct-file __model_core__ (model_value) when it is built; model_core's
+%! ## Octave arithmetic is the reference.  Bit for bit, every type, on many
+%! ## rows (the oct-file's threads) with a lobe of zero amplitude, grazing
+%! ## and mirror rows, and through material_x, the renderers' shading
+%! here = pwd ();
+%! state = rand ("state");
+%! unwind_protect
+%!   cd (fullfile (fileparts (which ("lafortune_eval")), "private"));
+%!   rand ("state", 5);
+%!   n = 131073;
+%!   ci = [rand(n - 3, 1) * 0.999 + 0.001; 1; 1e-3; 0.5];
+%!   co = [rand(n - 3, 1) * 0.999 + 0.001; 1; 1e-3; 0.5];
+%!   ph = [2 * pi * rand(n - 3, 1); 0; pi; pi];
+%!   w = ci .* co + sqrt (1 - ci .^ 2) .* sqrt (1 - co .^ 2) .* cos (ph);
+%!   X = [ci, co, w];
+%!   for t = {"blinnphong", "ward", "cooktorrance", "ggx", "ashikhminshirley"}
+%!     def = model_def (t{1});
+%!     ns = numel (def.shape);
+%!     q = zeros (ns, 3);
+%!     for j = 1:ns
+%!       lo = def.lo(j+1); hi = min (def.hi(j+1), 1e3);
+%!       if (strcmp (def.scale{j}, "log"))
+%!         q(j,:) = exp (log (lo) + [0.1 0.5 0.9] * (log (hi) - log (lo)));
+%!       else
+%!         q(j,:) = lo + [0.1 0.5 0.9] * (hi - lo);
+%!       endif
+%!     endfor
+%!     p = [0.7; reshape([[0; 1.3; 0.2], q'].', [], 1)];
+%!     a = model_core (def, p, X);
+%!     b = model_value (def, p, X);
+%!     assert (__same_bits (a, b), "%s: model_value differs from model_core", t{1});
+%!     assert (__same_bits (__octave_model (@() model_value (def, p, X)), a));
+%!     m = struct ("type", t{1}, "rho_d", [0.7 0.5 0.2]);
+%!     m.ks = repmat ([0; 1.3; 0.2], 1, 3);
+%!     for j = 1:ns
+%!       m.(def.shape{j}) = repmat (q(j,:)', 1, 3);
+%!     endfor
+%!     assert (__same_bits (material_x (m, X), __octave_model (@() material_x (m, X))),
+%!             "%s: material_x differs without the oct-file", t{1});
+%!   endfor
+%! unwind_protect_cleanup
+%!   cd (here);
+%!   rand ("state", state);
+%! end_unwind_protect

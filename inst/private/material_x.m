@@ -8,7 +8,7 @@
 ## light samples: the three numbers are all an isotropic BRDF depends on,
 ## so a trace keeps them and not the directions).  A Lafortune model goes
 ## through @code{lafortune_core} (ux vx + uy vy = wi . wo - cos ti cos to),
-## another type through @code{model_core}, a MERL material through
+## another type through @code{model_value} (model_core, compiled), a MERL material through
 ## @code{merl_eval} at the pair of directions @code{slice_dirs} makes of
 ## the three (the side of the mirror pair that @code{scene_slice}, so the
 ## slice tables of both renderers, take).
@@ -31,7 +31,7 @@ function f = material_x (material, X)
     case "model"
       [material, def] = check_model (material, "material_x");
       for c = 1:3
-        f(:,c) = model_core (def, model_pack (material, def, c), X);
+        f(:,c) = model_value (def, model_pack (material, def, c), X);
       endfor
     case "merl"
       ## the pair as scene_slice builds it (slice_dirs: wo in the xz plane,
