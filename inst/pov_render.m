@@ -4,6 +4,7 @@
 ## -*- texinfo -*-
 ## @deftypefn  {lafortune} {@var{img} =} pov_render (@var{scene}, @var{material})
 ## @deftypefnx {lafortune} {[@var{img}, @var{info}] =} pov_render (@var{scene}, @var{material}, @var{name}, @var{value}, @dots{})
+## @deftypefnx {lafortune} {[@var{imgs}, @var{infos}] =} pov_render (@var{scene}, @{@var{m1}, @var{m2}, @dots{}@}, @dots{})
 ## Render @var{scene} with @var{material} in POV-Ray.
 ##
 ## Writes the scene with @code{pov_write_scene} into a new temporary folder,
@@ -46,6 +47,13 @@
 ## frame by frame in up to 32 POV-Ray processes at once (POV-Ray idles
 ## between frames; each process then has one render thread unless
 ## @qcode{"threads"} says otherwise), and the frames are added up.
+## Several materials (a cell array) are rendered in the same scene at once:
+## their scenes are written one after the other, and their POV-Ray runs go
+## to up to 32 processes at once, each with one render thread unless
+## @qcode{"threads"} says otherwise; @var{imgs} and @var{infos} are cell
+## arrays, each image the one a call of its own gives.
+## A run that POV-Ray gives up because its render threads did not start in
+## its time limit (a loaded machine) is tried again, at most 3 times.
 ## @var{info} has the fields of @code{pov_write_scene}'s info (@code{bytes},
 ## @code{terms}, @code{entries}, @dots{}) and @code{time} (seconds, the
 ## @command{povray} run), @code{parse_time}, @code{trace_time} (POV-Ray's
@@ -102,6 +110,17 @@ function [img, info] = pov_render (scene, material, varargin)
     error ("lafortune:badOption", "%s: \"keep\" and \"povray\" must be strings", fname);
   endif
   exe = find_povray (opt.povray, fname);
+  several = iscell (material);
+  if (! several)
+    material = {material};
+  elseif (isempty (material))
+    error ("lafortune:badOption", "%s: MATERIAL must be a material or a non-empty cell array of them",
+           fname);
+  elseif (! isempty (opt.keep))
+    error ("lafortune:badOption", "%s: \"keep\" takes one material, got %d",
+           fname, numel (material));
+  endif
+  nm = numel (material);
 
   d = tempname ();
   [ok, msg] = mkdir (d);
@@ -109,98 +128,115 @@ function [img, info] = pov_render (scene, material, varargin)
     error ("lafortune:unwritable", "%s: cannot make the folder '%s': %s", fname, d, msg);
   endif
   unwind_protect
+    ## every material's scene, each in a folder of its own, and the POV-Ray
+    ## runs they need: one, or one per group of its lights' frames
     base = "scene";
     if (! isempty (opt.keep))                 # its lights' files are named after it
       [~, base] = fileparts (opt.keep);
       base = regexprep (base, "[^A-Za-z0-9_.-]", "_");
     endif
-    pov = fullfile (d, [base ".pov"]);
-    t0 = tic ();
-    winfo = pov_write_scene (scene, material, pov, pass{:});
-    wtime = toc (t0);
-    args = sprintf ("+I%s.pov +Oimage.exr +FE +W%d +H%d -D +GS -GR -GP File_Gamma=1.0",
-                    base, scene.width, scene.height);
+    common = sprintf ("+I%s.pov +Oimage.exr +FE +W%d +H%d -D +GS -GR -GP File_Gamma=1.0",
+                      base, scene.width, scene.height);
     if (aa)
-      args = [args, sprintf(" +A0.0 +AM1 +R%d", aa)];
+      common = [common, sprintf(" +A0.0 +AM1 +R%d", aa)];
       if (opt.jitter)
-        args = [args, " +J1.0"];
+        common = [common, " +J1.0"];
       else
-        args = [args, " -J"];
+        common = [common, " -J"];
       endif
     else
-      args = [args, " -A"];
+      common = [common, " -A"];
     endif
-    K = 0;
-    if (isfield (winfo, "frames"))            # lights: frame k is light k
-      K = winfo.frames;
-      args = [args, sprintf(" +KFI1 +KFF%d", K)];
-    endif
-    ## POV-Ray idles between frames (its front end polls), so
-    ## the frames of many lights go to several processes at once, each
-    ## with one render thread unless "threads" says otherwise
-    np = 1;
-    if (K > 1)
-      np = min (K, 32);
-      if (! th)
-        th = 1;
+    M = struct ("dir", cell (1, nm), "info", [], "wtime", 0, "K", 0, "args", "");
+    jobs = struct ("m", {}, "args", {});
+    for i = 1:nm
+      M(i).dir = d;
+      if (several)
+        M(i).dir = fullfile (d, sprintf ("m%d", i));
+        mkdir (M(i).dir);
       endif
-    endif
-    if (th)
-      args = [args, sprintf(" +WT%d", th)];
-    endif
-    ## POV-Ray gives up when its render threads do not start within its
-    ## own time limit, which a loaded machine can exceed: that run is tried
-    ## again (at most 3 times); any other failure is an error at once
-    for attempt = 1:3
-      if (np == 1)
-        cmd = sprintf ("cd %s && %s %s 2>&1", shell_quote (d), shell_quote (exe), args);
-        t0 = tic ();
-        [st, out] = system (cmd);
-        rtime = toc (t0);
+      t0 = tic ();
+      M(i).info = pov_write_scene (scene, material{i}, fullfile (M(i).dir, [base ".pov"]), pass{:});
+      M(i).wtime = toc (t0);
+      args = common;
+      K = 0;
+      if (isfield (M(i).info, "frames"))      # lights: frame k is light k
+        K = M(i).info.frames;
+        args = [args, sprintf(" +KFI1 +KFF%d", K)];
+      endif
+      M(i).K = K;
+      ## POV-Ray idles between frames and before a render (its front end
+      ## polls), so the frames of many lights, and the scenes of several
+      ## materials, go to several processes at once, each with one render
+      ## thread unless "threads" says otherwise
+      tj = th;
+      if ((K > 1 || several) && ! tj)
+        tj = 1;
+      endif
+      if (tj)
+        args = [args, sprintf(" +WT%d", tj)];
+      endif
+      M(i).args = args;
+      if (K > 1)
+        e = round (linspace (0, K, min (K, 32) + 1));
+        for j = 1:numel (e) - 1
+          jobs(end+1) = struct ("m", i, "args", sprintf ("%s +SF%d +EF%d", args, e(j) + 1, e(j+1)));
+        endfor
       else
-        e = round (linspace (0, K, np + 1));
-        run = "";
-        for j = 1:np
-          run = [run, sprintf("(%s %s +SF%d +EF%d > log%d.txt 2>&1; echo $? > status%d.txt) & ",
-                              shell_quote (exe), args, e(j) + 1, e(j+1), j, j)];
-        endfor
-        cmd = sprintf ("cd %s && { %swait; }", shell_quote (d), run);
-        t0 = tic ();
-        system (cmd);
-        rtime = toc (t0);
-        st = 0;
-        out = "";
-        for j = 1:np
-          sj = str2double (fileread_or (fullfile (d, sprintf ("status%d.txt", j)), "1"));
-          oj = fileread_or (fullfile (d, sprintf ("log%d.txt", j)), "");
-          if (sj != 0 && st == 0)
-            st = sj;
-            out = [oj, out];
-          else
-            out = [out, oj];
-          endif
-        endfor
-      endif
-      if (st == 0 || isempty (strfind (out, "waiting for worker thread startup")))
-        break;
+        jobs(end+1) = struct ("m", i, "args", args);
       endif
     endfor
-    if (K)
-      exr = arrayfun (@(k) fullfile (d, sprintf ("image%0*d.exr", numel (num2str (K)), k)),
-                      1:K, "UniformOutput", false);
-    else
-      exr = {fullfile(d, "image.exr")};
-    endif
-    if (st != 0 || ! all (cellfun (@(f) exist (f, "file") == 2, exr)))
-      error ("lafortune:povFailed", "%s: POV-Ray failed (exit status %d): %s", fname, st,
-             pov_message (out));
-    endif
-    img = 0;
-    for k = 1:numel (exr)                     # the lights' frames sum to the image
-      im = exrread (exr{k});
-      img += double (im(:,:,1:3));
+    cmd = run_jobs (exe, jobs, M, d);
+    img = cell (1, nm);
+    info = cell (1, nm);
+    for i = 1:nm
+      J = find ([jobs.m] == i);
+      st = 0;
+      out = "";
+      t = [Inf -Inf];
+      for j = J
+        sj = str2double (fileread_or (fullfile (M(i).dir, sprintf ("status%d.txt", j)), "1"));
+        oj = fileread_or (fullfile (M(i).dir, sprintf ("log%d.txt", j)), "");
+        tj = str2double (strsplit (strtrim (fileread_or (fullfile (M(i).dir, sprintf ("time%d.txt", j)), "NaN NaN"))));
+        if (numel (tj) == 2)
+          t = [min(t(1), tj(1)), max(t(2), tj(2))];
+        endif
+        if (sj != 0 && st == 0)
+          st = sj;
+          out = [oj, out];
+        else
+          out = [out, oj];
+        endif
+      endfor
+      K = M(i).K;
+      if (K)
+        exr = arrayfun (@(k) fullfile (M(i).dir, sprintf ("image%0*d.exr", numel (num2str (K)), k)),
+                        1:K, "UniformOutput", false);
+      else
+        exr = {fullfile(M(i).dir, "image.exr")};
+      endif
+      if (st != 0 || ! all (cellfun (@(f) exist (f, "file") == 2, exr)))
+        error ("lafortune:povFailed", "%s: POV-Ray failed (exit status %d): %s", fname, st,
+               pov_message (out));
+      endif
+      im = 0;
+      for k = 1:numel (exr)                   # the lights' frames sum to the image
+        x = exrread (exr{k});
+        im += double (x(:,:,1:3));
+      endfor
+      img{i} = im;
+      in = M(i).info;
+      in.file = opt.keep;
+      in.write_time = M(i).wtime;
+      in.time = t(2) - t(1);
+      in.parse_time = stat_time (out, "Parse Time");
+      in.trace_time = stat_time (out, "Trace Time");
+      in.command = sprintf ("cd %s && %s %s", shell_quote (M(i).dir), shell_quote (exe), M(i).args);
+      in.output = out;
+      info{i} = in;
     endfor
     if (! isempty (opt.keep))
+      pov = fullfile (d, [base ".pov"]);
       tmp = atomic_tmp (opt.keep, fname);
       [ok, msg] = copyfile (pov, tmp, "f");
       if (! ok)
@@ -209,10 +245,10 @@ function [img, info] = pov_render (scene, material, varargin)
                opt.keep, msg);
       endif
       atomic_commit (tmp, opt.keep, fname);
-      if (K)                                  # the lights' files, beside it
+      if (M(1).K)                             # the lights' files, beside it
         kd = fileparts (opt.keep);
-        for k = 1:K
-          inc = winfo.includes{k};
+        for k = 1:M(1).K
+          inc = M(1).info.includes{k};
           tmp = atomic_tmp (fullfile (kd, inc), fname);
           [ok, msg] = copyfile (fullfile (d, inc), tmp, "f");
           if (! ok)
@@ -228,14 +264,37 @@ function [img, info] = pov_render (scene, material, varargin)
     confirm_recursive_rmdir (false, "local");
     rmdir (d, "s");
   end_unwind_protect
-  info = winfo;
-  info.file = opt.keep;
-  info.write_time = wtime;
-  info.time = rtime;
-  info.parse_time = stat_time (out, "Parse Time");
-  info.trace_time = stat_time (out, "Trace Time");
-  info.command = cmd;
-  info.output = out;
+  if (! several)
+    img = img{1};
+    info = info{1};
+  endif
+endfunction
+
+## Run the POV-Ray JOBS (job j in its material's folder, its output in
+## logJ.txt, its exit status in statusJ.txt, its start and end times in
+## timeJ.txt), at most 32 at once.  POV-Ray gives up when its render
+## threads do not start within its own time limit, which a loaded machine
+## can exceed: that run is tried again (at most 3 times); any other failure
+## is left to the caller at once.  Returns the shell command
+function cmd = run_jobs (exe, jobs, M, d)
+  lines = {"set +m"};
+  for j = 1:numel (jobs)
+    dir = M(jobs(j).m).dir;
+    log = sprintf ("log%d.txt", j);
+    lines{end+1} = sprintf (["(cd %s && t0=$(date +%%s.%%N); for a in 1 2 3; do %s %s > %s 2>&1; s=$?; ", ...
+                             "if [ $s -ne 0 ] && grep -q 'waiting for worker thread startup' %s; ", ...
+                             "then continue; fi; break; done; echo $s > status%d.txt; ", ...
+                             "echo \"$t0 $(date +%%s.%%N)\" > time%d.txt) &"],
+                            shell_quote (dir), shell_quote (exe), jobs(j).args, log, log, j, j);
+    lines{end+1} = "while [ $(jobs -rp | wc -l) -ge 32 ]; do wait -n; done";
+  endfor
+  lines{end+1} = "wait";
+  script = fullfile (d, "run.sh");
+  fid = fopen (script, "w");
+  fprintf (fid, "%s\n", lines{:});
+  fclose (fid);
+  cmd = sprintf ("bash %s", shell_quote (script));
+  system (cmd);
 endfunction
 
 function s = fileread_or (f, dflt)

@@ -42,30 +42,36 @@ function R = repro_render_fits (material)
   for method = fieldnames (models)'
     mth = method{1};
     for k = 1:numel (models.(mth))
-      m = models.(mth){k};
-      if (isempty (m))
-        continue;
+      if (! isempty (models.(mth){k}))
+        done(end+1,:) = {mth, k, models.(mth){k}, [], [], [], []};
       endif
-      printf ("reproduce: [%s] POV-Ray render, %s fit, %d lobe(s)\n", material, mth, k);
-      fflush (stdout);
-      [img, pinfo] = pov_render (scene, m, "antialias", c.pov_aa, "threads", c.pov_threads);
-      base = repro_files ("fit_render", c.results, material, mth, k);
-      exrwrite ([base ".exr"], img);
-      img_write_png ([base ".png"], img, "auto");
-      ## the same model through the Octave raytracer, with the measured
-      ## render's samples
-      [img_rt, rinfo, cache] = rt_render (scene, m, "progress", false, "cache", cache);
-      done(end+1,:) = {mth, k, img, img_rt, pinfo, rinfo};
     endfor
+  endfor
+  if (! isempty (done))
+    ## every fit by POV-Ray in one call: their POV-Ray runs at once
+    printf ("reproduce: [%s] POV-Ray renders of %d fits\n", material, rows (done));
+    fflush (stdout);
+    [imgs, pinfos] = pov_render (scene, done(:,3)', "antialias", c.pov_aa, "threads", c.pov_threads);
+    done(:,4) = imgs(:);
+    done(:,6) = pinfos(:);
+  endif
+  for i = 1:rows (done)
+    [mth, k, m, img] = done{i,1:4};
+    base = repro_files ("fit_render", c.results, material, mth, k);
+    exrwrite ([base ".exr"], img);
+    img_write_png ([base ".png"], img, "auto");
+    ## the same model through the Octave raytracer, with the measured
+    ## render's samples
+    [done{i,5}, done{i,7}, cache] = rt_render (scene, m, "progress", false, "cache", cache);
   endfor
   repro_trace (scene, []);            # the trace is not needed after this step
   if (isempty (done))
     return;
   endif
-  qp = img_compare (refpov, done(:,3));
-  qr = img_compare (ref, done(:,4));
+  qp = img_compare (refpov, done(:,4));
+  qr = img_compare (ref, done(:,5));
   for i = 1:rows (done)
-    [mth, k, img, img_rt, pinfo, rinfo] = done{i,:};
+    [mth, k, ~, img, img_rt, pinfo, rinfo] = done{i,:};
     r = struct ("lobes", k, "psnr_pov", qp(i).psnr, "psnr_rt", qr(i).psnr,
                 "flip_pov", qp(i).flip, "flip_rt", qr(i).flip, "deltae_pov", qp(i).deltae,
                 "deltae_rt", qr(i).deltae, "hue_pov", qp(i).hue, "hue_rt", qr(i).hue,

@@ -323,6 +323,23 @@
 %! end_unwind_protect
 
 %!test
+%! ## several materials in one call: their POV-Ray runs at once, each image
+%! ## the one a call of its own gives; with lights (frames), too
+%! sc = scene_make ("sphere", "size", [16 12], "spp", 1);
+%! m2 = m1; m2.e = m1.e / 4;
+%! [img, info] = pov_render (sc, {m1, m2}, "entries", 16);
+%! assert (iscell (img) && iscell (info) && numel (img) == 2);
+%! assert (img{1}, pov_render (sc, m1, "entries", 16));
+%! assert (img{2}, pov_render (sc, m2, "entries", 16));
+%! assert (info{2}.time > 0 && info{2}.bytes > 0);
+%! sl = scene_make ("sphere", "size", [16 12], "spp", 1, "light", "lights",
+%!                  "light_direction", [0 0 1; 1 1 1], "irradiance", [1 1 1; 0.5 0.5 0.5]);
+%! img = pov_render (sl, {m2, m1}, "entries", 16);
+%! assert (img{1}, pov_render (sl, m2, "entries", 16));
+%!error id=lafortune:badOption pov_render (scene_make ("sphere", "size", [8 8]), {})
+%!error id=lafortune:badOption pov_render (scene_make ("sphere", "size", [8 8]), {m1, m1}, "keep", [tempname() ".pov"])
+
+%!test
 %! ## keep the scene file
 %! sc = scene_make ("sphere", "size", [16 16], "spp", 1);
 %! f = [tempname() ".pov"];
