@@ -16,7 +16,11 @@
 ## config.mk, or what BENCH_MAKE_ARGS adds (e.g. "QUICK=1").  BENCH_BASE=none
 ## skips the base.  This checkout runs twice: with the held-out judging
 ## (JUDGE of config.mk) and without it (JUDGE=), so the judging's cost per
-## material is measured in the same run.  Prints tables; not a test.  Run: make bench, or
+## material is measured in the same run.  Beside the stages, their floors:
+## POV-Ray's own time for the same render with a constant pigment (alone,
+## and as many at once as render_fits runs), and the BRDF evaluations of a
+## stage at the compiled cores' rates measured here.  Prints tables; not a
+## test.  Run: make bench, or
 ##   octave-cli scripts/bench_database.m
 
 1;
@@ -40,8 +44,83 @@ function [wall, S] = run_db (top, merl, jobs, args)
   unlink ([db ".log"]);
 endfunction
 
+## The floors of the stages for this checkout's default settings: a POV-Ray
+## run of a sphere with a constant pigment (the same size and
+## anti-aliasing; alone, and NFITS at once as render_fits runs them), and the
+## BRDF evaluations a material's renders need (the judge step: the light
+## samples rt_render evaluates for the measured data and every fit under
+## each held-out light; the slice renders: their tables) at the compiled
+## cores' rates, measured here
+function F = floors (merl)
+  c = repro_config ();
+  F = struct ("size", c.size, "aa", c.pov_aa);
+  nfits = numel (c.methods) * numel (c.lobes) + (! isempty (c.published) && exist (c.published, "file") == 2);
+  F.nfits = nfits;
+  d = tempname ();
+  mkdir (d);
+  W = c.size(2); H = c.size(1);
+  fid = fopen (fullfile (d, "c.pov"), "w");
+  fprintf (fid, ["camera { orthographic location <0, 0, -10> look_at <0, 0, 0> right x * %g up y * %g }\n", ...
+                 "sphere { <0, 0, 0>, 0.9 pigment { rgb <0.5, 0.3, 0.2> } finish { ambient 1 diffuse 0 } }\n"], ...
+           W / H * 2, 2);
+  fclose (fid);
+  args = sprintf ("+Ic.pov +Oc.exr +FE +W%d +H%d -D +GS -GR -GP +A0.0 +AM1 +R%d -J +WT1", W, H, c.pov_aa);
+  t = zeros (1, 3);
+  for i = 1:3
+    t0 = tic ();
+    system (sprintf ("cd '%s' && povray %s > /dev/null 2>&1", d, args));
+    t(i) = toc (t0);
+  endfor
+  F.pov1 = median (t);
+  run = "";
+  for i = 1:nfits
+    run = [run, sprintf("(povray %s +Oc%d.exr > /dev/null 2>&1) & ", args, i)];
+  endfor
+  t0 = tic ();
+  system (sprintf ("cd '%s' && { %s wait; }", d, run));
+  F.povn = toc (t0);
+  confirm_recursive_rmdir (false, "local");
+  rmdir (d, "s");
+  ## the compiled cores' rates
+  n = 2 ^ 20;
+  X = [rand(n, 1), rand(n, 1), 2 * rand(n, 1) - 1];
+  m = struct ("rho_d", [0.1 0.2 0.3], "Cxy", -[1 1 1; 0.5 0.5 0.5; 2 2 2], "Cz", [1 1 1; 0.6 0.6 0.6; 2 2 2],
+              "e", [10 20 30; 3 3 3; 200 200 200]);
+  wi = [sqrt(1 - X(:,1) .^ 2), zeros(n, 1), X(:,1)];
+  wo = [-sqrt(1 - X(:,2) .^ 2), zeros(n, 1), X(:,2)];
+  lafortune_eval (m, wi(1:100,:), wo(1:100,:));
+  t0 = tic (); lafortune_eval (m, wi, wo); F.rate_laf = n / toc (t0);
+  b = merl_read (fullfile (merl, dir (fullfile (merl, "*.binary"))(1).name));
+  merl_eval (b, wi(1:100,:), wo(1:100,:));
+  t0 = tic (); merl_eval (b, wi, wo); F.rate_merl = n / toc (t0);
+  ## the judge step's evaluations: each held-out light's light samples, for
+  ## the measured data and every fit
+  ev = 0;
+  ns = 0;
+  for L = c.judge
+    if (strcmp (L.type, "environment"))
+      sc = repro_scene (c, "spp", c.judge_spp, "light", "environment", "map", L.map,
+                        "light_samples", c.judge_samples);
+      [~, info] = rt_render (sc, b, "progress", false);
+      ev += info.evaluations;
+    endif
+  endfor
+  bj = ev / F.rate_merl + nfits * ev / F.rate_laf;
+  slice = prod ([128 64]);                 # rt_render's slice table
+  F.fit = struct ("pov", "-", "brdf", "-", "what", "not counted (leasqr's evaluations)");
+  F.render_measured = struct ("pov", sprintf ("%.1f", F.pov1), "brdf", sprintf ("%.3f", slice / F.rate_merl),
+                              "what", "one POV-Ray render; rt_render's slice table of the measured data");
+  F.render_fits = struct ("pov", sprintf ("%.1f (%.1f one after another)", F.povn, nfits * F.pov1),
+                          "brdf", sprintf ("%.3f", nfits * slice / F.rate_laf),
+                          "what", sprintf ("%d POV-Ray renders at once; %d slice tables", nfits, nfits));
+  F.judge = struct ("pov", "-", "brdf", sprintf ("%.2f", bj),
+                    "what", sprintf ("%.3g light samples under the environments, measured data and %d fits", ev, nfits));
+  F.sheet = struct ("pov", "-", "brdf", "-", "what", "no render");
+endfunction
+
 here = fileparts (mfilename ("fullpath"));
-addpath (here);                           # bench_data
+addpath (here);                           # bench_data, repro_config, repro_scene
+addpath (fullfile (here, "..", "inst"));
 top = fullfile (here, "..");
 merl = getenv ("BENCH_MERL_DIR");
 if (isempty (merl))
@@ -123,6 +202,27 @@ for f = st
   endfor
   printf ("\n");
 endfor
+
+## the floors beside the stages: what POV-Ray itself takes for the same
+## render with a constant pigment, and the BRDF evaluations of a stage at
+## the compiled cores' measured rates (this checkout's settings)
+F = floors (merl);
+printf ("\nFloors per material (this checkout's default settings; s):\n\n");
+printf ("| stage | this checkout (1 job) | POV-Ray, constant pigment | BRDF evaluations at the compiled rate | what the floor counts |\n|---|---|---|---|---|\n");
+for f = st
+  if (! isfield (F, f{1}))
+    continue;
+  endif
+  t = NaN;
+  if (isfield (V(1).S.stage_time, f{1}))
+    t = median (V(1).S.stage_time.(f{1}));
+  endif
+  printf ("| %s | %.1f | %s | %s | %s |\n", f{1}, t, F.(f{1}).pov, F.(f{1}).brdf, F.(f{1}).what);
+endfor
+printf ("\n(a POV-Ray run of a %d x %d constant-pigment sphere, anti-aliasing %d: %.2f s alone, %.2f s each for %d at once; ", ...
+        F.size(2), F.size(1), F.aa, F.pov1, F.povn / F.nfits, F.nfits);
+printf ("compiled rates: the Lafortune core %.3g evaluations/s (3 lobes, RGB), measured data (merl_eval) %.3g/s)\n", ...
+        F.rate_laf, F.rate_merl);
 
 printf ("\n100 materials, extrapolated from these runs:\n\n| version | %d cores, make -j%d | one 64-core Slurm node |\n|---|---|---|\n",
         nproc (), jobs);
