@@ -111,20 +111,7 @@ function [de, s] = img_deltae (ref, test, varargin)
            fname);
   endif
   ref = check_image (ref, "REF", lab, fname);
-  several = iscell (test);
-  if (! several)
-    test = {test};
-  elseif (isempty (test))
-    error ("lafortune:badImage", "%s: TEST must be an image or a non-empty cell array of images",
-           fname);
-  endif
-  for i = 1:numel (test)
-    test{i} = check_image (test{i}, "TEST", lab, fname);
-    if (! isequal (size (ref), size (test{i})))
-      error ("lafortune:badImage", "%s: REF and TEST must have the same size, got %s and %s",
-             fname, mat2str (size (ref)), mat2str (size (test{i})));
-    endif
-  endfor
+  [test, several] = image_list (ref, test, @(x) check_image (x, "TEST", lab, fname), fname);
   [h, w, ~] = size (ref);
   n = h * w;
   mask = opt.mask;

@@ -89,20 +89,7 @@ function [err, map, info] = img_flip (ref, test, varargin)
   endif
   ldr = logical (ldr);
   ref = check_image (ref, "REF", ldr, fname);
-  several = iscell (test);
-  if (! several)
-    test = {test};
-  elseif (isempty (test))
-    error ("lafortune:badImage", "%s: TEST must be an image or a non-empty cell array of images",
-           fname);
-  endif
-  for i = 1:numel (test)
-    test{i} = check_image (test{i}, "TEST", ldr, fname);
-    if (! isequal (size (ref), size (test{i})))
-      error ("lafortune:badImage", "%s: REF and TEST must have the same size, got %s and %s",
-             fname, mat2str (size (ref)), mat2str (size (test{i})));
-    endif
-  endfor
+  [test, several] = image_list (ref, test, @(x) check_image (x, "TEST", ldr, fname), fname);
   [H, W, ~] = size (ref);
 
   ppd = opt.ppd;

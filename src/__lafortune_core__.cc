@@ -16,13 +16,12 @@
 #include <octave/oct.h>
 
 #include "oct_guard.h"
+#include "oct_rows.h"
 
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <string>
-#include <thread>
-#include <vector>
 
 namespace
 {
@@ -152,28 +151,7 @@ doubles), @var{sxy} and @var{sz} real double columns of equal length.\n\
         add_lobe (pp[3 * k + 1], pp[3 * k + 2], pp[3 * k + 3], px + a, pz + a, b - a,
                   pf + a, nullptr, 0);
     };
-    const octave_idx_type per = 65536;         // rows worth a thread
-    unsigned nt = std::max (1u, std::min (std::thread::hardware_concurrency (), 8u));
-    nt = static_cast<unsigned> (std::min<octave_idx_type> (nt, std::max<octave_idx_type> (1, n / per)));
-    std::vector<octave_idx_type> cut (nt + 1);
-    for (unsigned t = 0; t <= nt; t++)
-      cut[t] = n * t / nt;
-    std::vector<std::thread> pool;
-    unsigned started = 1;                      // range 0 is this thread's
-    try
-      {
-        for (unsigned t = 1; t < nt; t++, started++)
-          pool.emplace_back (rows, cut[t], cut[t + 1]);
-      }
-    catch (...)
-      {
-        // no more threads: the ranges not started are done here
-      }
-    rows (cut[0], cut[1]);
-    for (unsigned t = started; t < nt; t++)
-      rows (cut[t], cut[t + 1]);
-    for (auto& th : pool)
-      th.join ();
+    oct_rows (n, rows);
   });
   octave_value_list out;
   out(0) = f;

@@ -17,13 +17,12 @@
 #include <octave/oct.h>
 
 #include "oct_guard.h"
+#include "oct_rows.h"
 
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <string>
-#include <thread>
-#include <vector>
 
 namespace
 {
@@ -197,28 +196,7 @@ both cosines > 0).  @var{f} is N x 1.\n\
             }
         }
     };
-    const octave_idx_type per = 65536;         // rows worth a thread
-    unsigned nt = std::max (1u, std::min (std::thread::hardware_concurrency (), 8u));
-    nt = static_cast<unsigned> (std::min<octave_idx_type> (nt, std::max<octave_idx_type> (1, n / per)));
-    std::vector<octave_idx_type> cut (nt + 1);
-    for (unsigned j = 0; j <= nt; j++)
-      cut[j] = n * j / nt;
-    std::vector<std::thread> pool;
-    unsigned started = 1;                      // range 0 is this thread's
-    try
-      {
-        for (unsigned j = 1; j < nt; j++, started++)
-          pool.emplace_back (rows, cut[j], cut[j + 1]);
-      }
-    catch (...)
-      {
-        // no more threads: the ranges not started are done here
-      }
-    rows (cut[0], cut[1]);
-    for (unsigned j = started; j < nt; j++)
-      rows (cut[j], cut[j + 1]);
-    for (auto& th : pool)
-      th.join ();
+    oct_rows (n, rows);
   });
   return ovl (f);
 }

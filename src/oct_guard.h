@@ -6,7 +6,7 @@
 // out of memory becomes the Octave error lafortune:outOfMemory, any other
 // exception lafortune:badInput, with the message "WHO: what went wrong".
 // Shared by the compiled inner loops (__merl_nearest__, __rt_traverse__,
-// __lafortune_core__).
+// __lafortune_core__, __model_core__).
 
 #ifndef LAFORTUNE_OCT_GUARD_H
 #define LAFORTUNE_OCT_GUARD_H

@@ -12,10 +12,10 @@
 ## calls the oct-file __pov_knots__ when it is built: the entries it chooses
 ## on random tables (ties, NaN, masks) and whole POV-Ray scene files.
 
-%!function varargout = __octave_engine (fn)
-%!  ## FN () with the oct-file __lafortune_core__ off the path
-%!  d = fileparts (which ("__lafortune_core__"));
-%!  assert (! isempty (d), "the oct-file __lafortune_core__ is not built (make -C src)");
+%!function varargout = __octave_engine (fn, oct = "__lafortune_core__")
+%!  ## FN () with the oct-file OCT off the path
+%!  d = fileparts (which (oct));
+%!  assert (! isempty (d), sprintf ("the oct-file %s is not built (make -C src)", oct));
 %!  assert (! strcmp (d, fileparts (which ("lafortune_eval"))),
 %!          "the oct-file shares its folder with the m-files; it cannot be hidden");
 %!  old = path ();
@@ -25,12 +25,12 @@
 %!                      canonicalize_file_name (d)));
 %!  unwind_protect
 %!    rmpath (hide{:});
-%!    assert (exist ("__lafortune_core__", "file"), 0);
+%!    assert (exist (oct, "file"), 0);
 %!    [varargout{1:nargout}] = fn ();
 %!  unwind_protect_cleanup
 %!    path (old);
 %!  end_unwind_protect
-%!  assert (exist ("__lafortune_core__", "file"), 3);
+%!  assert (exist (oct, "file"), 3);
 %!endfunction
 
 %!function [wi, wo] = __dirs (n)
@@ -267,23 +267,6 @@
 %! assert (! isempty (strfind (out, "same 1 1, lafortune:noOctFile")), out);
 %! assert (numel (strfind (out, "does not work")) == 1, "%s", out);
 
-%!function varargout = __octave_model (fn)
-%!  ## FN () with the oct-file __model_core__ off the path
-%!  d = fileparts (which ("__model_core__"));
-%!  assert (! isempty (d), "the oct-file __model_core__ is not built (make -C src)");
-%!  old = path ();
-%!  dirs = strsplit (old, pathsep ());
-%!  hide = dirs(strcmp (cellfun (@canonicalize_file_name, dirs, "UniformOutput", false),
-%!                      canonicalize_file_name (d)));
-%!  unwind_protect
-%!    rmpath (hide{:});
-%!    assert (exist ("__model_core__", "file"), 0);
-%!    [varargout{1:nargout}] = fn ();
-%!  unwind_protect_cleanup
-%!    path (old);
-%!  end_unwind_protect
-%!  assert (exist ("__model_core__", "file"), 3);
-%!endfunction
 
 %!test
 %! ## the physically based models' values for shading: material_x calls the
@@ -318,13 +301,13 @@
 %!     a = model_core (def, p, X);
 %!     b = model_value (def, p, X);
 %!     assert (__same_bits (a, b), "%s: model_value differs from model_core", t{1});
-%!     assert (__same_bits (__octave_model (@() model_value (def, p, X)), a));
+%!     assert (__same_bits (__octave_engine (@() model_value (def, p, X), "__model_core__"), a));
 %!     m = struct ("type", t{1}, "rho_d", [0.7 0.5 0.2]);
 %!     m.ks = repmat ([0; 1.3; 0.2], 1, 3);
 %!     for j = 1:ns
 %!       m.(def.shape{j}) = repmat (q(j,:)', 1, 3);
 %!     endfor
-%!     assert (__same_bits (material_x (m, X), __octave_model (@() material_x (m, X))),
+%!     assert (__same_bits (material_x (m, X), __octave_engine (@() material_x (m, X), "__model_core__")),
 %!             "%s: material_x differs without the oct-file", t{1});
 %!   endfor
 %! unwind_protect_cleanup
