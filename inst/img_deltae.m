@@ -144,6 +144,7 @@ function [de, s] = img_deltae (ref, test, varargin)
   des = cell (1, nt);
   for i = 1:nt
     B = reshape (test{i}, n, 3);
+    nz = nzA | any (B != 0, 2);          # the object: either pixel non-zero
     if (lab)
       labB = B;
     elseif (strcmp (metric, "ciede2000") || nargout > 1)
@@ -153,11 +154,7 @@ function [de, s] = img_deltae (ref, test, varargin)
       ## where both pixels are black (rgb input) both colours are 0 and so is
       ## the difference: the formula is applied to the others alone
       de = zeros (n, 1);
-      if (lab)
-        on = true (n, 1);
-      else
-        on = nzA | any (B != 0, 2);
-      endif
+      on = nz | lab;
       de(on) = ciede2000 (labA(on,:), labB(on,:));
       nits = NaN;
     else
@@ -167,7 +164,7 @@ function [de, s] = img_deltae (ref, test, varargin)
     des{i} = reshape (de, h, w);
     if (nargout > 1)
       if (isempty (mask))
-        m = nzA | any (B != 0, 2);
+        m = nz;
       else
         m = logical (mask(:));
       endif

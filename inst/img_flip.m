@@ -143,9 +143,14 @@ function [err, map, info] = img_flip (ref, test, varargin)
     expo = [];
   endif
 
-  ## the reference's part of the comparison, on the crop its own object
-  ## pixels give (a test whose object reaches beyond it gets its own crop:
-  ## the crop decides the filters' border, so it is always the pair's)
+  ## A pixel farther than the filters reach from every non-zero pixel has
+  ## error 0 (both images are 0 there in every exposure, and so are their
+  ## filtered colours and features): compute only the box around the
+  ## non-zero pixels, with a margin of zeros (so edges extended at the box
+  ## are the zeros beyond it).  This is exact, and fast on renders on a
+  ## black background.  The reference's part is made once, on the box its
+  ## own object pixels give; a test whose object reaches beyond it gets its
+  ## own box (the box decides the filters' border, so it is the pair's)
   nzref = any (ref != 0, 3);
   P = [];
   nt = numel (test);
@@ -433,13 +438,17 @@ function S = side (X, F)
   [H, W, ~] = size (X);
   N = H * W;
   z = reshape (X, N, 3) * F.A';
+  ## colour: filtered opponent colours back to linear RGB, clamped to the
+  ## gamut, Hunt-adjusted CIELAB
   S.f = csf (z, H, W, F);
   S.lab = lab_of (S.f, F);
+  ## features of the luminance (white-relative Y, in [0, 1])
   [S.e, S.p] = features (reshape (z(:,1), H, W) / 116, F);
 endfunction
 
 function map = ldr_flip (r, t, F)
   [H, W] = size (r.e);
+  ## HyAB of the colours; 0 where the filtered colours are the same
   d = hyab (r.lab, t.lab);
   dc = min (d * F.lo(1) + F.lo(2), d * F.hi(1) + F.hi(2));
   dc(! any (r.f != t.f, 2)) = 0;
