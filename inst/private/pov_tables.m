@@ -121,7 +121,7 @@ function D = term_grid (scene, term, rng_i, rng_o, n, samp, opt, gam, C)
     c = cos (ti);
     [lo, hi] = reach_bounds (ti, gam, C);
     T = extend_c1 (R ./ c, ti, to, lo, hi,
-                   @(t, p) slice_grid (scene, term, t, p, gam, C) / cos (t));
+                   @(t, p) slice_pairs (scene, term, t, p, gam, C) ./ cos (t));
     ## what any normal can reach (the extension beyond it only serves the
     ## interpolation next to it), and with samples what the view reaches
     M = to' >= lo - opt.pad & to' <= hi + opt.pad;
@@ -204,11 +204,33 @@ function Md = reach_mask (samp, ti, to, pad)
   b = lookup (sti, ti + pad);
   lo = inf (n, 1);
   hi = -inf (n, 1);
-  for i = find (b >= a)'
-    lo(i) = min (sto(a(i):b(i)));
-    hi(i) = max (sto(a(i):b(i)));
-  endfor
+  i = find (b >= a);
+  if (! isempty (i))
+    [lo(i), hi(i)] = range_minmax (sto, a(i), b(i));
+  endif
   Md = to' >= lo - pad & to' <= hi + pad;
+endfunction
+
+## min and max of X(A(i):B(i)) for every i, all at once: column k of MN
+## (MX) holds the minima (maxima) of the runs of 2^(k-1) values from each
+## index, and a run A:B is the union of two such runs, from A and from B
+## backwards
+function [mn, mx] = range_minmax (x, a, b)
+  x = x(:);
+  N = numel (x);
+  [~, e] = log2 (max (b - a + 1));
+  Mn = Mx = zeros (N, e);
+  Mn(:,1) = Mx(:,1) = x;
+  for k = 2:e
+    s = 2 ^ (k - 2);
+    Mn(:,k) = min (Mn(:,k-1), [Mn(s+1:end,k-1); inf(s, 1)]);
+    Mx(:,k) = max (Mx(:,k-1), [Mx(s+1:end,k-1); -inf(s, 1)]);
+  endfor
+  [~, k] = log2 (b - a + 1);                    # 2^(k-1) <= B - A + 1 < 2^k
+  i1 = a + N * (k - 1);
+  i2 = b - 2 .^ (k - 1) + 1 + N * (k - 1);
+  mn = min (Mn(i1), Mn(i2));
+  mx = max (Mx(i1), Mx(i2));
 endfunction
 
 ## No normal reaches (ti, to) outside |ti - gamma| <= to <= ti + gamma, where
@@ -217,7 +239,7 @@ endfunction
 ## whole table cell.  Continue each row linearly (in to) from the boundary
 ## instead: the table is then smooth to first order across it.  Extrapolated
 ## values are kept >= 0.
-function T = extend_c1 (T, ti, to, lo, hi, evalrow)
+function T = extend_c1 (T, ti, to, lo, hi, evalpairs)
   n = numel (to);
   to = to(:)';
   in = to >= lo & to <= hi;                     # n x n
@@ -241,9 +263,19 @@ function T = extend_c1 (T, ti, to, lo, hi, evalrow)
   endfor
   ## rows whose reachable range holds fewer than 3 grid points (ti near 0, or
   ## light and viewer nearly aligned): 3 points across it, evaluated exactly
-  for i = find (! ok)'
-    p = linspace (lo(i), hi(i), 3);
-    v = reshape (evalrow (ti(i), p), 3, []);    # points x channels
+  bad = find (! ok);
+  if (isempty (bad))
+    return;
+  endif
+  ## their points (as linspace (lo, hi, 3) places them), evaluated in one call
+  P = [lo(bad), lo(bad) + (hi(bad) - lo(bad)) / 2, hi(bad)];
+  P(lo(bad) == hi(bad),2) = lo(bad)(lo(bad) == hi(bad));
+  V = evalpairs (repmat (ti(bad), 3, 1), P(:));
+  V = reshape (V, numel (bad), 3, []);
+  for r = 1:numel (bad)
+    i = bad(r);
+    p = P(r,:);
+    v = reshape (V(r,:,:), 3, []);              # points x channels
     if (p(3) > p(1))
       sl = (v(2,:) - v(1,:)) / (p(2) - p(1));
       sh = (v(3,:) - v(2,:)) / (p(3) - p(2));
@@ -308,6 +340,17 @@ function R = slice_grid (scene, term, ti, u, gam, C)
                                 # silhouette, where scene_slice steps to 0
   TI = repmat (ti, 1, numel (u));
   R = reshape (scene_slice (scene, term, TI(:), to(:), "pairs"), numel (ti), numel (u), []);
+endfunction
+
+## scene_slice at the pairs (TI(i), U(i)) of the inner angle (columns):
+## each value as slice_grid makes it
+function R = slice_pairs (scene, term, ti, u, gam, C)
+  to = u;
+  if (C.half)
+    to = acos (min (max (2 * cos (u) * cos (gam / 2) - cos (ti), -1), 1));
+    to = min (to, pi/2 - 1e-6);
+  endif
+  R = scene_slice (scene, term, ti, to, "pairs");
 endfunction
 
 ## the Q-quantile of the largest channel of R (n x m x 3) where M
