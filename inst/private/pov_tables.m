@@ -269,7 +269,6 @@ function T = extend_c1 (T, ti, to, lo, hi, evalpairs)
   endif
   ## their points (as linspace (lo, hi, 3) places them), evaluated in one call
   P = [lo(bad), lo(bad) + (hi(bad) - lo(bad)) / 2, hi(bad)];
-  P(lo(bad) == hi(bad),2) = lo(bad)(lo(bad) == hi(bad));
   V = evalpairs (repmat (ti(bad), 3, 1), P(:));
   V = reshape (V, numel (bad), 3, []);
   for r = 1:numel (bad)
@@ -333,23 +332,18 @@ function R = slice_grid (scene, term, ti, u, gam, C)
     R = scene_slice (scene, term, ti, u);
     return;
   endif
-  ti = ti(:);
-  u = u(:)';
-  to = acos (min (max (2 * cos (u) * cos (gam / 2) - cos (ti), -1), 1));
-  to = min (to, pi/2 - 1e-6);   # as the (ti, to) tables: continued across the
-                                # silhouette, where scene_slice steps to 0
-  TI = repmat (ti, 1, numel (u));
-  R = reshape (scene_slice (scene, term, TI(:), to(:), "pairs"), numel (ti), numel (u), []);
+  [TI, U] = ndgrid (ti(:), u(:));
+  R = reshape (slice_pairs (scene, term, TI(:), U(:), gam, C), numel (ti), numel (u), []);
 endfunction
 
 ## scene_slice at the pairs (TI(i), U(i)) of the inner angle (columns):
-## each value as slice_grid makes it
+## (slice_grid makes its grid's values here too: one definition of to)
 function R = slice_pairs (scene, term, ti, u, gam, C)
   to = u;
   if (C.half)
     to = acos (min (max (2 * cos (u) * cos (gam / 2) - cos (ti), -1), 1));
-    to = min (to, pi/2 - 1e-6);
-  endif
+    to = min (to, pi/2 - 1e-6);   # as the (ti, to) tables: continued across the
+  endif                           # silhouette, where scene_slice steps to 0
   R = scene_slice (scene, term, ti, to, "pairs");
 endfunction
 
