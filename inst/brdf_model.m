@@ -49,7 +49,7 @@
 ## material_eval (m, [0.6 0 0.8], [-0.6 0 0.8])
 ## @end group
 ## @end example
-## @seealso{material_eval, brdf_fit, brdf_albedo, lafortune_export}
+## @seealso{material_eval, brdf_fit, brdf_albedo, brdf_export}
 ## @end deftypefn
 
 function varargout = brdf_model (varargin)

@@ -63,7 +63,7 @@
 ## Options:
 ## @table @code
 ## @item "weight"
-## the metric the fit minimises, by the names of @code{lafortune_error},
+## the metric the fit minimises, by the names of @code{brdf_error},
 ## which reports the same sums (both take them from one definition):
 ## @code{"plain"} (default, as the paper: the rms error; for a scene table
 ## @code{"relative"} and for a hemisphere table of @code{merl_samples} the
@@ -143,7 +143,7 @@
 ## channel (1 x 3 arrays, each a mean weighted by @code{S.weight}, on all
 ## samples of @var{S}, a scene table's prior not included, with the models
 ## evaluated as @code{lafortune_eval} does, 0 on or below the horizon:
-## equal to @code{lafortune_error}'s values):
+## equal to @code{brdf_error}'s values):
 ## @code{rmse} ("plain"), @code{rel_rmse} (rmse / rms of the data),
 ## @code{log_rmse} ("log"), @code{cos_rmse} ("cosine"; NaN when
 ## @code{S.measure} is already Ngan's cosine measure), @code{error} (the
@@ -207,7 +207,7 @@
 ## S = merl_plane (brdf);                      # in plane, grazing left out
 ## [m, info, all] = lafortune_fit (S, 3);
 ## info.history                                 # rmse for 1, 2, 3 lobes
-## lafortune_export (all@{2@}, "gmp-2lobe.json", "json");
+## brdf_export (all@{2@}, "gmp-2lobe.json", "json");
 ## H = merl_samples (brdf);                     # every valid bin
 ## m3 = lafortune_fit (H, 3);                   # the general fit
 ## m3p = lafortune_fit (H, 3, "weight", "plain"); # plain solid-angle weights
@@ -217,7 +217,7 @@
 ## ms = lafortune_fit (merl_scene (brdf, sc), 2);  # the fit that looks best there
 ## @end group
 ## @end example
-## @seealso{merl_plane, merl_samples, lafortune_eval, lafortune_export}
+## @seealso{merl_plane, merl_samples, lafortune_eval, brdf_export}
 ## @end deftypefn
 function [model, info, models] = lafortune_fit (S, nlobes, varargin)
   if (nargin < 2)
@@ -242,7 +242,7 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
     return;
   endif
   opt = check_opts (opt, nlobes);
-  ## the table as lafortune_error checks it, with a scene table's prior
+  ## the table as brdf_error checks it, with a scene table's prior
   [S, wt, n0] = fit_table (S, opt.weight, "lafortune_fit");
   pkg_load_optim ();
 
@@ -638,7 +638,7 @@ endfunction
 %!   for c = 1:3
 %!     assert (info.trace{c}(end,2), info.rmse(c), 1e-9 * info.rmse(c));
 %!   endfor
-%!   assert (info.error, lafortune_error (m, S, w{1}), 1e-9 * max (info.error));
+%!   assert (info.error, brdf_error (m, S, w{1}), 1e-9 * max (info.error));
 %! endfor
 %! [~, i1] = lafortune_fit (S, 2, "color", "shared");
 %! [~, i2] = lafortune_fit (S, 2);
@@ -699,8 +699,8 @@ endfunction
 %! d = tempname (); mkdir (d);
 %! unwind_protect
 %!   f = fullfile (d, "m.json");
-%!   lafortune_export (m, f, "json");
-%!   r = lafortune_import (f);
+%!   brdf_export (m, f, "json");
+%!   r = brdf_import (f);
 %!   for fld = {"rho_d", "Cxy", "Cz", "e"}
 %!     assert (isequal (r.(fld{1}), m.(fld{1})));
 %!   endfor

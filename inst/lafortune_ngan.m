@@ -30,7 +30,7 @@
 ## lafortune_eval (m, [0 0 1], [0 0 1])    # green-metallic-paint at normal incidence
 ## @end group
 ## @end example
-## @seealso{lafortune_eval, lafortune_fit, lafortune_import}
+## @seealso{lafortune_eval, lafortune_fit, brdf_import}
 ## @end deftypefn
 function m = lafortune_ngan (varargin)
   if (nargin == 2)

@@ -58,7 +58,7 @@
 ## is the weight of a squared residual times cos theta_i; as a bin holds
 ## both (wi, wo) and (wo, wi), P is the mean of cos^2 theta_i over the two,
 ## (cos^2 theta_i + cos^2 theta_o) / 2.  With it, the plain metric of
-## @code{lafortune_error} is Ngan et al.'s.
+## @code{brdf_error} is Ngan et al.'s.
 ## @code{"projected"}: cos theta_i cos theta_o dwi dwo (the measure of
 ## reflected energy: the albedo of a Lambertian BRDF rho/pi is
 ## @code{sum (S.weight .* f) / pi} = rho).
@@ -94,12 +94,12 @@
 ## brdf = merl_standin ("red-plastic");
 ## S = merl_samples (brdf, "max_samples", 2e5);
 ## sum (S.weight)                    # (2 pi (1 - cosd (80)))^2 = 26.96
-## e = lafortune_error (lafortune_fit (S, 2), S, "log")
+## e = brdf_error (lafortune_fit (S, 2), S, "log")
 ## [fit, info] = lafortune_fit (merl_samples (brdf), 3);  # the general fit
 ## info.weight                       # the weighting it chose
 ## @end group
 ## @end example
-## @seealso{merl_plane, lafortune_fit, lafortune_error}
+## @seealso{merl_plane, lafortune_fit, brdf_error}
 ## @end deftypefn
 function S = merl_samples (brdf, varargin)
   if (nargin < 1)

@@ -34,7 +34,7 @@
 ## whose normals change fast, 12% of the pixels get 33 each), and each of
 ## those samples is a row of its own, at its exact angles.
 ##
-## @var{S} is a scene table, as @code{lafortune_error} and
+## @var{S} is a scene table, as @code{brdf_error} and
 ## @code{lafortune_fit} take it:
 ## @table @code
 ## @item kind
@@ -77,7 +77,7 @@
 ## A model's image error is then a weighted sum over the table: with one
 ## sample per pixel the image's MSE is sum (weight .* mean ((f - y) .*
 ## irradiance)^2, 2) up to the cells' width, and with more samples per
-## pixel up to the averaging within pixels (@code{lafortune_error (model, S,
+## pixel up to the averaging within pixels (@code{brdf_error (model, S,
 ## "psnr")}), so a weighted least-squares fit on @var{S} maximises the
 ## render's PSNR.  @var{img} is the scene rendered from the table (H x W x 3,
 ## background where nothing is hit).
@@ -93,10 +93,10 @@
 ## scene = scene_make ("sphere", "size", [64 64], "spp", 1);
 ## S = merl_scene (brdf, scene);
 ## m = lafortune_fit (S, 2);                    # the sphere's picture, fitted
-## lafortune_error (m, S, "psnr")                # about its render's PSNR
+## brdf_error (m, S, "psnr")                # about its render's PSNR
 ## @end group
 ## @end example
-## @seealso{merl_samples, merl_plane, lafortune_error, lafortune_fit, rt_render, scene_slice}
+## @seealso{merl_samples, merl_plane, brdf_error, lafortune_fit, rt_render, scene_slice}
 ## @end deftypefn
 
 function [S, img] = merl_scene (material, scene, varargin)
@@ -280,7 +280,7 @@ endfunction
 %! S = merl_scene (brdf, sc);
 %! ref = rt_render (sc, brdf, "mode", "direct", "progress", false);
 %! img = rt_render (sc, m2, "mode", "direct", "progress", false);
-%! assert (abs (lafortune_error (m2, S, "psnr") - img_psnr (ref, img)) < 0.5);
+%! assert (abs (brdf_error (m2, S, "psnr") - img_psnr (ref, img)) < 0.5);
 
 %!test
 %! ## perspective camera and shadows: gamma varies, cells in three angles

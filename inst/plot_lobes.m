@@ -37,7 +37,7 @@
 ##             "paper", [29.27 31.44 31.02], "highlight", 3);
 ## @end group
 ## @end example
-## @seealso{plot_renders, plot_trace, lafortune_error, merl_scene}
+## @seealso{plot_renders, plot_trace, brdf_error, merl_scene}
 ## @end deftypefn
 function [hf, hax] = plot_lobes (psnr, names, varargin)
   fname = "plot_lobes";

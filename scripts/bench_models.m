@@ -34,7 +34,7 @@ for i = 1:numel (mats)
       [m, info, ms] = brdf_fit (S, types{k}, 3);
       tt = sum (info.lobe_time, 2).';            # the channels one after the other
       if (strcmp (tabs{t,1}, "scene"))
-        err = cellfun (@(m) mean (lafortune_error (m, S, info.weight)), ms);
+        err = cellfun (@(m) mean (brdf_error (m, S, info.weight)), ms);
       else
         err = mean (info.history, 2).';
       endif

@@ -47,7 +47,7 @@ function repro_figures ()
     b = merl_read (repro_files ("merl", c.data_dir, mat));
     models = cell (1, nl);
     for j = 1:nl
-      models{j} = lafortune_import ([repro_files("model", c.results, mat, "inplane", c.lobes(j)) ".json"]);
+      models{j} = brdf_import ([repro_files("model", c.results, mat, "inplane", c.lobes(j)) ".json"]);
     endfor
     ## Fig. 2 / 3
     done (plot_plane (b, models, "theta_i", 30, "max_angle", c.max_angle,

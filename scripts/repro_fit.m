@@ -85,9 +85,9 @@ function R = repro_fit (material)
       m = models{k};
       m.name = sprintf ("%s, %d lobe(s), %s fit", material, k, mth);
       base = repro_files ("model", c.results, material, mth, k);
-      lafortune_export (m, [base ".json"], "json");
-      lafortune_export (m, [base ".txt"], "text");
-      lafortune_export (m, [base ".brdf"], "brdfexplorer");
+      brdf_export (m, [base ".json"], "json");
+      brdf_export (m, [base ".txt"], "text");
+      brdf_export (m, [base ".brdf"], "brdfexplorer");
       ## its parameters, for the reports (which read them here, not from
       ## the files again)
       for f = def.fields
@@ -125,12 +125,12 @@ function R = repro_fit (material)
   endfor
 endfunction
 
-## the errors of model M on the table S, by lafortune_error (the one place
+## the errors of model M on the table S, by brdf_error (the one place
 ## where the metrics are defined)
 function e = model_errors (m, S)
-  [e.rmse, i] = lafortune_error (m, S, "plain");
+  [e.rmse, i] = brdf_error (m, S, "plain");
   e.rel_rmse = i.relative;
-  e.log_rmse = lafortune_error (m, S, "log");
-  e.cos_rmse = lafortune_error (m, S, "cosine");
+  e.log_rmse = brdf_error (m, S, "log");
+  e.cos_rmse = brdf_error (m, S, "cosine");
 endfunction
 

@@ -14,7 +14,7 @@ function models = repro_fits (c, material)
   models = struct ();
   for method = c.methods
     for k = c.lobes
-      models.(method{1}){k} = lafortune_import ([repro_files("model", c.results, material, method{1}, k) ".json"]);
+      models.(method{1}){k} = brdf_import ([repro_files("model", c.results, material, method{1}, k) ".json"]);
     endfor
   endfor
   pub = published (c, material);

@@ -25,7 +25,7 @@
 ## @code{table}, @code{weight}, @code{psnr_a}, @code{psnr_b} (1 x LOBES:
 ## the scene, the second scene), @code{flip_a}, @code{flip_b} (HDR-FLIP,
 ## img_compare), @code{psnr_a_predicted} (from the scene
-## table, @code{lafortune_error} "psnr"), @code{fit_time} and @code{rmse}
+## table, @code{brdf_error} "psnr"), @code{fit_time} and @code{rmse}
 ## (mean RGB, on the method's own table).
 ## @end deftypefn
 function R = repro_study (material)
@@ -67,7 +67,7 @@ function R = repro_study (material)
     for k = 1:numel (c.lobes)
       f = [repro_files("model", c.results, material, m{1}, c.lobes(k)) ".json"];
       if (isfield (F, m{1}) && exist (f, "file"))
-        seen{end+1} = lafortune_import (f);
+        seen{end+1} = brdf_import (f);
         done(end+1,:) = [F.(m{1})(k).psnr_pov, NaN, F.(m{1})(k).flip_pov, NaN];
         main.(m{1}){c.lobes(k)} = seen{end};
       endif
@@ -125,7 +125,7 @@ function R = repro_study (material)
       r.flip_a(k) = done(j,3);
       r.flip_b(k) = done(j,4);
       if (isfield (T, "scene"))
-        r.psnr_a_predicted(k) = lafortune_error (m, T.scene, "psnr");
+        r.psnr_a_predicted(k) = brdf_error (m, T.scene, "psnr");
       endif
     endfor
     printf ("reproduce: [%s] study: %s/%s PSNR %s dB, FLIP %s (scene); %s dB, FLIP %s (second scene)\n",

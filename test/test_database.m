@@ -294,7 +294,7 @@
 %!   assert ((iscell (tr) && numel (tr) == 3 && all (cellfun (@columns, tr) == 2))
 %!           || (size (tr, 1) == 3 && size (tr, 3) == 2));
 %!   ## the models' parameters in the record, as in their files (the report reads them here)
-%!   md = lafortune_import (fullfile (db, "materials", "red-plastic", "fit", "red-plastic-inplane-2.json"));
+%!   md = brdf_import (fullfile (db, "materials", "red-plastic", "fit", "red-plastic-inplane-2.json"));
 %!   pr = F.inplane.parameters(2);
 %!   for f = {"rho_d", "Cxy", "Cz", "e"}
 %!     assert (reshape (pr.(f{1}), [], 3), md.(f{1}), 1e-14 * max (abs (md.(f{1})(:))));
@@ -306,10 +306,10 @@
 %!   assert (st == 0, "%s", txt);
 %!   assert (isempty (regexp (txt, "fitting|rendering|POV-Ray|held-out light|FAILED|database: \\d+ materials")), txt);
 %!   assert (dir (fullfile (db, "table.csv")).datenum, t0);
-%!   ## a change to lafortune_import (which only the fits' renders call) re-runs
+%!   ## a change to brdf_import (which only the fits' renders call) re-runs
 %!   ## the fits' renders, not the fits nor the measured renders (make passes -W
 %!   ## to no sub-make: ask for the table itself)
-%!   [st, txt] = __make (top, db, merl, sprintf ("-W inst/lafortune_import.m -j2 '%s'", fullfile (db, "table.csv")));
+%!   [st, txt] = __make (top, db, merl, sprintf ("-W inst/brdf_import.m -j2 '%s'", fullfile (db, "table.csv")));
 %!   assert (st == 0, "%s", txt);
 %!   assert (! isempty (regexp (txt, "\\[red-plastic\\] POV-Ray render")), txt);
 %!   assert (isempty (regexp (txt, "fitting|rendering the measured")), txt);

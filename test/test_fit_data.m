@@ -88,8 +88,8 @@
 %!   S = merl_scene (merl_read (p), sc);
 %!   [~, ~, ms] = lafortune_fit (S, 2, "weight", "psnr");
 %!   [~, ~, m1] = lafortune_fit (S, 2, "weight", "psnr", "tries", 1);
-%!   e = cellfun (@(m) lafortune_error (m, S, "psnr"), ms);
-%!   e1 = cellfun (@(m) lafortune_error (m, S, "psnr"), m1);
+%!   e = cellfun (@(m) brdf_error (m, S, "psnr"), ms);
+%!   e1 = cellfun (@(m) brdf_error (m, S, "psnr"), m1);
 %!   assert (e(2) >= e(1) - 1e-9);
 %!   assert (e(2) > e1(2) + 3, sprintf ("every family %.2f dB, one start %.2f dB", e(2), e1(2)));
 %! endif

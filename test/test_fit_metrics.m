@@ -2,8 +2,8 @@
 ## SPDX-License-Identifier: GPL-3.0-or-later
 
 ## Integration tests of lafortune_fit with the metrics of metric_spec (the one
-## definition, which lafortune_error reports): every "weight" name, the
-## reported errors equal to lafortune_error's, the (a, c) merging exact for
+## definition, which brdf_error reports): every "weight" name, the
+## reported errors equal to brdf_error's, the (a, c) merging exact for
 ## per-sample weights and transforms, scene tables ("psnr").  Run from the
 ## package root with
 ##   addpath ("inst"); pkg load optim; test ("test/test_fit_metrics.m")
@@ -31,7 +31,7 @@
 %!                 "Cz", [1 1 1; 0.65 0.65 0.65], "e", [60 60 60; 4 4 4]);
 
 %!test
-%! ## every weighting: the reported errors are lafortune_error's, and the
+%! ## every weighting: the reported errors are brdf_error's, and the
 %! ## fit's own metric (info.error) too; weighted, noisy table
 %! warning ("off", "lafortune:notConverged", "local");
 %! S = __plane (truth, 3);
@@ -41,10 +41,10 @@
 %! for w = {"plain", "cosine", "relative", "log", "cuberoot"}
 %!   [m, info] = lafortune_fit (S, 2, "weight", w{1});
 %!   tol = 1e-12;
-%!   assert (info.error, lafortune_error (m, S, w{1}), tol * max (lafortune_error (m, S, w{1})));
-%!   assert (info.rmse, lafortune_error (m, S, "plain"), tol * max (info.rmse));
-%!   assert (info.cos_rmse, lafortune_error (m, S, "cosine"), tol * max (info.cos_rmse));
-%!   assert (info.log_rmse, lafortune_error (m, S, "log"), tol * max (info.log_rmse));
+%!   assert (info.error, brdf_error (m, S, w{1}), tol * max (brdf_error (m, S, w{1})));
+%!   assert (info.rmse, brdf_error (m, S, "plain"), tol * max (info.rmse));
+%!   assert (info.cos_rmse, brdf_error (m, S, "cosine"), tol * max (info.cos_rmse));
+%!   assert (info.log_rmse, brdf_error (m, S, "log"), tol * max (info.log_rmse));
 %!   assert (info.rel_rmse, info.rmse ./ sqrt (sum (S.weight .* S.rgb .^ 2) / sum (S.weight)), 1e-12);
 %! endfor
 
@@ -60,9 +60,9 @@
 %!   m{i} = lafortune_fit (S, 1, "weight", names{i}, "tries", 3);
 %! endfor
 %! for i = 1:numel (names)
-%!   own = lafortune_error (m{i}, S, names{i});
+%!   own = brdf_error (m{i}, S, names{i});
 %!   for k = 1:numel (names)
-%!     assert (all (own <= lafortune_error (m{k}, S, names{i}) * (1 + 1e-6)), ...
+%!     assert (all (own <= brdf_error (m{k}, S, names{i}) * (1 + 1e-6)), ...
 %!             sprintf ("%s fit against the %s fit", names{i}, names{k}));
 %!   endfor
 %! endfor
@@ -87,11 +87,11 @@
 %! mm = lafortune_fit (M, 2, "weight", "plain", "tol", 1e-14);
 %! fs = lafortune_eval (ms, M.wi, M.wo); fm = lafortune_eval (mm, M.wi, M.wo);
 %! assert (max (abs (fs(:) - fm(:))) <= 1e-7 * max (fm(:)));
-%! assert (is.error, lafortune_error (ms, S, "psnr"), 1e-10);
+%! assert (is.error, brdf_error (ms, S, "psnr"), 1e-10);
 %! assert (isscalar (is.error));
 %! ## relative: per-sample weights from the metric, delta from all samples
 %! S2 = rmfield (S, {"kind", "irradiance"});
-%! [~, info] = lafortune_error (truth, S2, "relative");
+%! [~, info] = brdf_error (truth, S2, "relative");
 %! wr = S2.weight ./ max (S2.rgb, info.delta) .^ 2;
 %! [mr, ir] = lafortune_fit (S2, 1, "weight", "relative", "tol", 1e-14);
 %! for c = 1:3
@@ -102,7 +102,7 @@
 %!   fr = lafortune_eval (mr, M.wi, M.wo)(:,c); fc = lafortune_eval (mc, M.wi, M.wo)(:,c);
 %!   assert (max (abs (fr - fc)) <= 1e-7 * max (fc));
 %! endfor
-%! assert (ir.error, lafortune_error (mr, S2, "relative"), 1e-12);
+%! assert (ir.error, brdf_error (mr, S2, "relative"), 1e-12);
 
 %!test
 %! ## a scene-weighted fit is the best of the fits in the scene's PSNR
@@ -111,7 +111,7 @@
 %! mp = lafortune_fit (S, 1, "weight", "psnr");
 %! for w = {"plain", "cosine", "relative", "log"}
 %!   mw = lafortune_fit (rmfield (S, {"kind", "irradiance"}), 1, "weight", w{1});
-%!   assert (lafortune_error (mp, S, "psnr") >= lafortune_error (mw, S, "psnr") - 1e-9, w{1});
+%!   assert (brdf_error (mp, S, "psnr") >= brdf_error (mw, S, "psnr") - 1e-9, w{1});
 %! endfor
 
 %!test
@@ -131,12 +131,12 @@
 %! endfor
 
 %!test
-%! ## zero weights: left out of the fit, in the errors as lafortune_error has them
+%! ## zero weights: left out of the fit, in the errors as brdf_error has them
 %! S = __scene (truth, 8, 6);
 %! S.weight(1:3:end) = 0;
 %! [m, info] = lafortune_fit (S, 1, "weight", "psnr");
-%! assert (info.error, lafortune_error (m, S, "psnr"), 1e-10);
-%! assert (info.rmse, lafortune_error (m, S, "plain"), 1e-12 * max (info.rmse));
+%! assert (info.error, brdf_error (m, S, "psnr"), 1e-10);
+%! assert (info.rmse, brdf_error (m, S, "plain"), 1e-12 * max (info.rmse));
 
 %!test
 %! ## the table's name goes into every model (and so into exports)
@@ -155,7 +155,7 @@
 
 %!test
 %! ## a scene table with a prior: the reported errors are on the table itself,
-%! ## as lafortune_error has them (the prior is only in the fit)
+%! ## as brdf_error has them (the prior is only in the fit)
 %! warning ("off", "lafortune:notConverged", "local");
 %! S = __scene (truth, 8, 7);
 %! P = __plane (truth, 5);
@@ -163,9 +163,9 @@
 %! S.prior_weight = 0.5;
 %! [m, info, ms] = lafortune_fit (S, 2, "weight", "psnr");
 %! T = rmfield (S, {"prior", "prior_weight"});
-%! assert (info.error, lafortune_error (m, T, "psnr"), 1e-10);
-%! assert (info.rmse, lafortune_error (m, T, "plain"), 1e-12 * max (info.rmse));
-%! assert (info.history(1,:), lafortune_error (ms{1}, T, "plain"), 1e-12 * max (info.rmse));
+%! assert (info.error, brdf_error (m, T, "psnr"), 1e-10);
+%! assert (info.rmse, brdf_error (m, T, "plain"), 1e-12 * max (info.rmse));
+%! assert (info.history(1,:), brdf_error (ms{1}, T, "plain"), 1e-12 * max (info.rmse));
 %! assert (info.trace{1}(end,2), info.rmse(1), 1e-12);
 
 %!test
@@ -179,7 +179,7 @@
 %! S.prior_weight = 1;
 %! [m, info] = lafortune_fit (S, 1);
 %! assert (info.n, 3 + rows (P.wi));
-%! assert (info.rmse, lafortune_error (m, rmfield (S, {"prior", "prior_weight"})), 1e-12 * max (info.rmse));
+%! assert (info.rmse, brdf_error (m, rmfield (S, {"prior", "prior_weight"})), 1e-12 * max (info.rmse));
 %!error <at least 4 samples, got 3> lafortune_fit (struct ("wi", repmat ([0 0 1], 3, 1), "wo", repmat ([0 0 1], 3, 1), "rgb", ones (3, 3)), 1)
 
 %!test
@@ -190,4 +190,4 @@
 %! wo = [sind(TO(:)) 0*TO(:) cosd(TO(:))];
 %! S = struct ("wi", wi, "wo", wo, "rgb", lafortune_eval (truth, wi, wo) + 0.01);
 %! [m, info] = lafortune_fit (S, 1);
-%! assert (info.rmse, lafortune_error (m, S, "plain"), 1e-12 * max (info.rmse));
+%! assert (info.rmse, brdf_error (m, S, "plain"), 1e-12 * max (info.rmse));

@@ -1,7 +1,7 @@
 ## Copyright (C) 2026 The lafortune developers
 ## SPDX-License-Identifier: GPL-3.0-or-later
 
-## Integration tests of the error metrics (lafortune_error, the private
+## Integration tests of the error metrics (brdf_error, the private
 ## metric_spec) with the quadrature weights of merl_samples.  Run from the
 ## package root with
 ##   addpath ("inst"); test ("test/test_metrics.m")
@@ -39,7 +39,7 @@
 %! cnt = accumarray (k, 1);
 %! S = struct ("kind", "scene", "wi", wi, "wo", wo, "rgb", lafortune_eval (ref, wi, wo),
 %!             "weight", cnt / np, "irradiance", wi(:,3) .* E);
-%! assert (lafortune_error (m, S, "psnr"), db, 1e-10);
+%! assert (brdf_error (m, S, "psnr"), db, 1e-10);
 %! assert (db > 10 && db < 60);
 
 %!test
@@ -54,8 +54,8 @@
 %! Sm = merl_samples (b, "max_samples", 20000, "views", false);
 %! tol = struct ("plain", 0.05, "cosine", 0.05, "relative", 0.01, "log", 0.01, "cuberoot", 0.01);
 %! for name = fieldnames (tol)'
-%!   e = lafortune_error (m, S, name{1});
-%!   em = lafortune_error (m, Sm, name{1});
+%!   e = brdf_error (m, S, name{1});
+%!   em = brdf_error (m, Sm, name{1});
 %!   assert (em, e, tol.(name{1}) * e);
 %! endfor
 
@@ -66,9 +66,9 @@
 %! b = merl_synth (truth, "noise", 0.05);
 %! S = merl_plane (b, "step", 2);
 %! [m, info] = lafortune_fit (S, 1);
-%! assert (lafortune_error (m, S, "plain"), info.rmse, 1e-12);
-%! assert (lafortune_error (m, S, "cosine"), info.cos_rmse, 1e-12);
-%! assert (lafortune_error (m, S, "log"), info.log_rmse, 1e-12);
+%! assert (brdf_error (m, S, "plain"), info.rmse, 1e-12);
+%! assert (brdf_error (m, S, "cosine"), info.cos_rmse, 1e-12);
+%! assert (brdf_error (m, S, "log"), info.log_rmse, 1e-12);
 
 %!test
 %! ## stiff: exponent 1e5, data over ten decades with zeros: finite metrics
@@ -79,7 +79,7 @@
 %! S.rgb(1:4:end,:) = 0;
 %! assert (max (S.rgb(:)) > 1e10 * min (S.rgb(S.rgb > 0)));
 %! for name = {"plain", "cosine", "relative", "log", "cuberoot"}
-%!   e = lafortune_error (m, S, name{1});
+%!   e = brdf_error (m, S, name{1});
 %!   assert (all (isfinite (e) & e >= 0), name{1});
 %! endfor
 
@@ -97,8 +97,8 @@
 %!   S = merl_samples (b, "views", false);
 %!   Sm = merl_samples (b, "max_samples", 20000, "views", false);
 %!   for name = {"plain", "cosine", "relative", "log", "cuberoot"}
-%!     e = lafortune_error (fits{i,2}, S, name{1});
-%!     em = lafortune_error (fits{i,2}, Sm, name{1});
+%!     e = brdf_error (fits{i,2}, S, name{1});
+%!     em = brdf_error (fits{i,2}, Sm, name{1});
 %!     assert (all (isfinite (e) & e > 0));
 %!     assert (em, e, 0.05 * e);
 %!   endfor

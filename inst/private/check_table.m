@@ -4,7 +4,7 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{S}, @var{w}] =} check_table (@var{S}, @var{fname}, @var{nmin})
 ## The one check of a sample table (private), so that lafortune_fit and
-## lafortune_error accept the same tables: a struct with fields @code{wi},
+## brdf_error accept the same tables: a struct with fields @code{wi},
 ## @code{wo} (unit directions, see check_dirs), @code{rgb} (real, finite,
 ## N x 3) and optionally @code{weight} (N values, finite, >= 0 and not all
 ## zero, as a row or a column; empty means none), with at least @var{nmin}

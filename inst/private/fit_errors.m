@@ -1,7 +1,7 @@
 ## Copyright (C) 2026 The lafortune developers
 ## SPDX-License-Identifier: GPL-3.0-or-later
 
-## INFO's errors (lafortune_error's values, metric_spec's finish) of the
+## INFO's errors (brdf_error's values, metric_spec's finish) of the
 ## fit's model values F (N x 3, on the table of the specs REP, NAMES from
 ## fit_specs) and FK (a cell of the values of the fits with fewer lobes,
 ## for info.history; may be empty), channels not FITTED NaN; WEIGHT the

@@ -87,7 +87,7 @@ function [model, models, info] = fit_lafortune (S, wt, n0, nlobes, opt)
     info = channel_info (info, c, toc (t0), ch, nlobes, opt);
     traces{c} = ch.trace;
   endfor
-  ## the reported errors: lafortune_error's values (metric_spec's finish) of
+  ## the reported errors: brdf_error's values (metric_spec's finish) of
   ## the models evaluated as it evaluates them (lafortune_eval: 0 on or below
   ## the horizon); a channel not fitted has the zero model
   Fk = {};

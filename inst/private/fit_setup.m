@@ -9,7 +9,7 @@
 ## @table @code
 ## @item Srep, rep, names
 ## the table as given (rows 1 .. @var{n0}) and its metrics as
-## lafortune_error defines them (fit_specs), in the data's units: what the
+## brdf_error defines them (fit_specs), in the data's units: what the
 ## fit reports;
 ## @item Sf
 ## the rows @var{keep};

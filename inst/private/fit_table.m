@@ -4,7 +4,7 @@
 ## @deftypefn  {} {[@var{S}, @var{wt}, @var{n0}] =} fit_table (@var{S}, @var{weight}, @var{fname})
 ## @deftypefnx {} {[@var{model}, @var{models}] =} fit_table (@var{S}, @var{model}, @var{models})
 ## The table of a fit (private), for both fronts (lafortune_fit, brdf_fit):
-## checked as lafortune_error checks it (check_table), with a scene table's
+## checked as brdf_error checks it (check_table), with a scene table's
 ## prior appended (fit_prior; its rows after row @var{n0}) and checked again
 ## with them, 4 samples at least; @var{wt} the weights.  With models, the
 ## table's name given to them (the exports carry it).

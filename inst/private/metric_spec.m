@@ -6,7 +6,7 @@
 ## @deftypefnx {} {@var{spec} =} metric_spec (@var{metric}, @var{S}, @var{fname}, @var{delta})
 ## @deftypefnx {} {@var{names} =} metric_spec ()
 ## The one definition of the error metrics (private): what
-## @code{lafortune_error} reports and what a least-squares fitter
+## @code{brdf_error} reports and what a least-squares fitter
 ## (@code{lafortune_fit}) minimises.  Without arguments, the metrics' names
 ## (a cell).  @var{delta} (1 x 3), when given, is the table's delta below,
 ## already known (from another spec of the same table): it saves the

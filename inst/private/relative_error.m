@@ -7,7 +7,7 @@
 ## model over the error @var{e0} of the model that is 0 everywhere (for the
 ## plain metric, the rms of the data), per channel; 0 where @var{e} is 0.
 ## @code{rel_rmse} of @code{lafortune_fit}, @code{brdf_fit} and
-## @code{lafortune_error}'s @code{info.relative}.
+## @code{brdf_error}'s @code{info.relative}.
 ## @end deftypefn
 function r = relative_error (e, e0)
   r = e ./ max (e0, realmin) .* (e > 0);
