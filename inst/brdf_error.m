@@ -33,8 +33,8 @@
 ## with @code{"plain"} is the exact quadrature of Ngan et al.'s integral (its
 ## weights integrate the cosine over each bin; @code{"cosine"} is refused
 ## there), while @code{"cosine"} with solid-angle weights takes the cosine at
-## the bins' grid points: their integrals differed by 4 to 7% for Ngan et
-## al.'s fit of green-metallic-paint.
+## the bins' grid points, an approximation of the same integral (README,
+## "Measurements behind the design", says by how much).
 ## @item "relative"
 ## sqrt (sum (s ((f - y) / max (y, delta))^2) / sum (s)).
 ## @item "log"

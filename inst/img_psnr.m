@@ -16,7 +16,7 @@
 ## @example
 ## @group
 ## ref = rand (64, 64, 3);
-## db = img_psnr (ref, ref + 0.01 * randn (64, 64, 3))   # about 40 dB
+## db = img_psnr (ref, ref + 0.01 * randn (64, 64, 3))   # near 10 log10 (1 / 0.01^2)
 ## @end group
 ## @end example
 ## @seealso{img_diff}

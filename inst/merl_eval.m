@@ -25,7 +25,7 @@
 ## of operations (its Rodrigues rotations, term by term), so that even the
 ## samples that rounding decides land in the reader's bin for the same
 ## direction vectors.  @code{"reference"} does every sample with the
-## reader's arithmetic, in Octave: the same bins, several times slower (the
+## reader's arithmetic, in Octave: the same bins, slower (bench_merl, the
 ## peer of the benchmark; @code{"nearest"} falls back to it, with the
 ## warning @code{lafortune:noOctFile} once, when the oct-file has not been
 ## built).  @code{"linear"} interpolates

@@ -30,7 +30,7 @@
 ##
 ## @example
 ## @group
-## brdf = merl_read ("../shared/data/merl-proxy/red-plastic.binary");
+## brdf = merl_read ("red-plastic.binary");   # a file of the MERL database
 ## printf ("%d of %d samples valid\n", nnz (brdf.valid), numel (brdf.valid));
 ## @end group
 ## @end example

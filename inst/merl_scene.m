@@ -22,16 +22,12 @@
 ## samples' mean angles.
 ##
 ## A sharp highlight can be narrower than a pixel: a few samples per pixel
-## then miss it or hit its peak, and a cell's mean angle misses it too (on
-## the sphere scene with 4 samples per pixel, the table's image peak was 24
-## times below the 128-spp render's for specular-white-phenolic and 15 times
-## for aluminium, and a fit to such a table could render worse with more
-## lobes).  So the pixels that may hold the mirror direction
+## then miss it or hit its peak, and a cell's mean angle misses it too (a
+## fit to such a table can render worse with more lobes).  So the pixels that may hold the mirror direction
 ## (N = H, halfway between L and V: the smallest angle (N, H) of their
 ## samples is below twice the angle between their mean normal and a
 ## neighbour's) are sampled again with @qcode{"refine"} samples each (fewer
-## when that would more than double the samples: on the Happy Buddha,
-## whose normals change fast, 12% of the pixels get 33 each), and each of
+## when that would more than double the samples), and each of
 ## those samples is a row of its own, at its exact angles.
 ##
 ## @var{S} is a scene table, as @code{brdf_error} and
@@ -66,12 +62,10 @@
 ## settles the third (without it a fit may use Cxy = Cz and a huge exponent,
 ## a constant in this view that explodes in any other).  The prior's error
 ## per unit weight is far larger than the scene's (it holds the grazing
-## angles the model fits worst), so a small weight already pulls hard: over
-## 26 materials, the sphere scene's predicted PSNR of 1- to 3-lobe image
-## fits was at least as high with 1e-4 as with 1e-3 in 77 of 78 cases
-## (median +0.56 dB, up to +10.4 dB), while in a second light direction
-## the median change was -0.1 dB.  A larger prior trades the scene's
-## picture for other views.
+## angles the model fits worst), so a small weight already pulls hard (the
+## README's "Measurements behind the design" gives the measurement behind
+## the default).  A
+## larger prior trades the scene's picture for other views.
 ## @end table
 ##
 ## A model's image error is then a weighted sum over the table: with one

@@ -26,10 +26,9 @@
 ## that differs at all from its neighbours with a regular @var{n} x @var{n}
 ## grid of rays (the samples of @code{rt_render} with @code{scene.jitter}
 ## false and @code{scene.spp} = @var{n}^2) and averages them together with
-## the first ray through the pixel centre: measured on the Happy Buddha, a
-## pixel is (c + @var{n}^2 g)/(@var{n}^2 + 1), c the centre sample and g the
-## grid's mean (66 to 72 dB against that for @var{n} = 2 to 4; 44 to 56 dB
-## against g alone).  Against jittered samples the images agree up to
+## the first ray through the pixel centre: a pixel is (c + @var{n}^2
+## g)/(@var{n}^2 + 1), c the centre sample and g the grid's mean (test_pov
+## checks it against rt_render's samples).  Against jittered samples the images agree up to
 ## sampling noise.
 ## @item @qcode{"jitter"} (false)
 ## With anti-aliasing, jitter the subsamples (@code{+J}).

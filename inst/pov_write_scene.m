@@ -37,12 +37,7 @@
 ## theta_h squared: over (ti, to) a lobe of exponent 1e5 is a sliver along
 ## the edge of what normals reach, which a map of 256 entries (POV-Ray's
 ## limit) misses, while over (ti, theta_h) it is a bump of the lobe's
-## angular width.  Measured against @code{rt_render}'s per-sample shading
-## at the pixel centres, a 256 x 256 sphere: 72.1 dB for e = 1e5 (54.9 dB
-## over (ti, to), the highlight lost) and 88.8 dB for e = 2000 (75.3 dB); on
-## the 26 measured materials of ../shared, the two renderers now agree on
-## the fitted models to 58 dB or better (over (ti, to): down to 27 dB).
-## (Lit from nearly behind the viewer, |L + V| < 0.1, and with a
+## angular width.  (Lit from nearly behind the viewer, |L + V| < 0.1, and with a
 ## perspective camera the inner maps stay over to.)
 ##
 ## An analytic @var{material} of any type (@code{brdf_model}) gets one
@@ -61,8 +56,8 @@
 ## inner angle.  The error allowed, @qcode{"table_tol"} times the radiance
 ## level of the view (the 99th percentile of the material's radiance over
 ## the reached angles: relative to a measured material's specular peak,
-## 1000 times the rest, the diffuse part was allowed errors of half its
-## value), is shared between the tables in proportion to their size (flat
+## which can be orders of magnitude above the rest, the diffuse part would
+## be allowed errors as large as itself), is shared between the tables in proportion to their size (flat
 ## tables need none) and split equally between the two levels; a map never
 ## has more than @qcode{"entries"} entries, so very sharp lobes may stop
 ## short of it (such a map starts from @qcode{"entries"}/4 evenly spaced
@@ -149,11 +144,7 @@
 ## neighbouring levels of the whole material's slice is off by more than
 ## @qcode{"gamma_tol"} times its largest radiance (at most 64 levels).
 ## Each level is a table like the orthographic one, so the file grows with
-## the number of levels (measured on 256 x 256 images, a 2-lobe model with
-## exponents 40 and 5, against @code{rt_render}'s direct shading at the
-## pixel centres: four spheres on a plane, 13 levels, 6.1 MB, 71 dB; the
-## 100k-triangle Happy Buddha, 5 levels at @qcode{"gamma_tol"} 0.05, 6.3 MB,
-## 55.6 dB).
+## the number of levels.
 ##
 ## @strong{Several lights, an environment.}  POV-Ray gives a surface one
 ## pigment for all its lights, and has no glossy environment lighting (its
@@ -340,8 +331,8 @@ function T = light_tables (scene, material, opt, cam, kind, L, G)
   endfor
   ## the error allowed is relative to the view's radiance level: its 99th
   ## percentile over the reached angles (a measured material's specular
-  ## peak can be 1000 times the rest; relative to it, the diffuse part of
-  ## the picture was allowed 45% errors)
+  ## peak can be orders of magnitude above the rest; relative to it, the
+  ## diffuse part of the picture would get errors as large as itself)
   level = min (peak, level);
   if (! (level > 0))
     level = peak;
@@ -351,8 +342,8 @@ function T = light_tables (scene, material, opt, cam, kind, L, G)
   endif
   ## a lobe that never shows is dropped: its largest radiance where the view
   ## reaches is below lobe_tol times the view's radiance level (not the
-  ## peak: a sharp lobe's peak, between the pixels, can be 1e5 times the
-  ## broad lobe that carries the body); lobe_tol applies to lobes, the
+  ## peak: a sharp lobe's peak, between the pixels, can be orders of
+  ## magnitude above the broad lobe that carries the body); lobe_tol applies to lobes, the
   ## diffuse term stays
   kept = contrib > 0 & contrib * peak >= opt.lobe_tol * level;
   d = strcmp (names, "diffuse");

@@ -37,7 +37,8 @@
 ## processed in waves; each wave pops the most recently pushed pairs (so each
 ## ray goes roughly depth first, near child first), culls pairs whose box
 ## entry lies beyond the ray's best hit so far, tests the triangles of the
-## leaves and pushes the children whose boxes are hit.  Some 10 times slower.
+## leaves and pushes the children whose boxes are hit.  Slower (make bench's
+## bench_render says by how much).
 ## @item "auto"
 ## (default) "compiled" when the oct-file exists, else "octave".
 ## @end table

@@ -53,11 +53,10 @@
 ## default size @code{"slice_size"} = [128 64] (theta_h x psi), single
 ## precision, 128 x 64 x 3 x 4 bytes = 98 kB, 356 times less than the 35 MB
 ## of a MERL table.  For analytic models the image then differs from the
-## direct one by < 1e-4 of its peak (RMS; 88 dB PSNR for a lobe of exponent
-## 2000 on the lit sphere); for MERL materials the difference is about 1e-3
-## to 2e-3 (50 to 55 dB) whatever the table size, because the direct
-## nearest-bin lookup itself jumps at the MERL bin edges, which any
-## interpolated table smooths.
+## direct one by less than 1e-4 of its peak (RMS; test_render asserts it);
+## for MERL materials the difference does not fall with the table size,
+## because the direct nearest-bin lookup itself jumps at the MERL bin
+## edges, which any interpolated table smooths.
 ## @item "direct"
 ## evaluate @code{material_eval} per hit, in the local frame.
 ## @item "auto"
@@ -134,11 +133,11 @@
 ## @example
 ## @group
 ## scene = scene_make ("sphere", "size", [128 128], "spp", 4);
-## brdf = merl_read ("../shared/data/merl-proxy/green-metallic-paint.binary");
+## brdf = merl_standin ("green-metallic-paint");  # or merl_read ("FILE.binary")
 ## [img, info] = rt_render (scene, brdf);
 ## info.material_bytes        # the slice, not the 35 MB table
 ## [img2, info2] = rt_render (scene, brdf, "mode", "direct");
-## img_psnr (img2, img)       # > 50 dB
+## img_psnr (img2, img)       # the slice against per-sample shading
 ## ## one trace, many materials
 ## [img, ~, cache] = rt_render (scene, brdf);
 ## fit = lafortune_fit (merl_samples (brdf), 2);

@@ -29,7 +29,8 @@ function R = repro_render_measured (material)
   ## the measured data through POV-Ray as well, with the fits' samples: the
   ## fits' POV-Ray renders are compared with it, so that both sides of each
   ## PSNR see the same sample positions (on a mesh whose triangles are
-  ## smaller than a pixel, different positions alone differ by 30 to 50 dB)
+  ## smaller than a pixel, different positions alone cost much of the PSNR:
+  ## README, "Measurements behind the design")
   printf ("reproduce: [%s] rendering the measured data (POV-Ray, anti-aliasing %d)\n",
           material, c.pov_aa);
   fflush (stdout);

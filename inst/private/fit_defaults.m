@@ -3,7 +3,7 @@
 
 ## The defaults that depend on the table: for a scene table (merl_scene,
 ## S.kind "scene") the fit that looks best in that scene, as measured by
-## FLIP and CIEDE2000 on the 26 materials of ../shared (README, "Fits that
+## FLIP and CIEDE2000 over a database of materials (README, "Fits that
 ## look right"); for a hemisphere table (merl_samples) the general fit, the
 ## one that looks best in light it was not made for (README, "One fit for
 ## every scene"): with the table's training views (S.views) the weighting

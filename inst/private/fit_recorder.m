@@ -19,11 +19,8 @@
 ## the sum of squares ss = sumsq (w .* r) can no longer fall by @var{tol}
 ## times itself: the decrease that the Gauss-Newton step predicts (MINPACK's
 ## predicted reduction) is below @var{tol} * ss / 2.  The half is a margin:
-## in these large-residual fits a step gains up to about 1.75 times its
-## prediction, and on both paper materials' in-plane tables (5 metrics, 1 to
-## 3 lobes, 180 runs from perturbed starts) the runs then end less than
-## 0.8 @var{tol} * ss above where leasqr's own test ends them (without the
-## margin, up to 3.2 @var{tol} * ss).  The prediction is computed only when
+## in these large-residual fits a step can gain more than it predicts (the
+## README's "Measurements behind the design" gives the measurement).  The prediction is computed only when
 ## the last iteration's decrease was below 100 @var{tol} * ss (with linear
 ## convergence the next one is smaller still), so most iterations cost one
 ## sum of squares.  @code{rec.p} is then the point and @code{rec.iter} the

@@ -19,9 +19,8 @@
 ## the path, it does the same operations in the same order, compiled, and
 ## this function calls it: the results are the same bit for bit
 ## (test/test_core_engines.m compares both, values, Jacobians and whole fits);
-## it is about twice as fast (values and Jacobian on a few thousand rows),
-## and whole fits 1.1 to 1.5 times (in Octave, exp and log were most of the
-## cost already).  An oct-file that does not load (built for another
+## it is faster (make bench's bench_fit, "Model engines", says by how
+## much).  An oct-file that does not load (built for another
 ## Octave) raises the warning @code{lafortune:noOctFile} once and the
 ## Octave arithmetic is used.  Inputs are real doubles, @var{sxy} and
 ## @var{sz} columns (every caller's are).

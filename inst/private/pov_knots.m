@@ -28,9 +28,8 @@
 ## out of entries before its error is under @var{tol} is made again from
 ## @var{nmax}/4 evenly spaced entries and refined greedily from there: its
 ## sharp part would otherwise take every entry and leave the rest to one
-## long interval (on a measured material's table, whose specular peak is
-## 1000 times its diffuse level, the last outer interval spanned ti = 0.52
-## to 1.57 radians).
+## long interval (a measured material's specular peak can be orders of
+## magnitude above its diffuse level).
 ##
 ## @var{K} is @var{n} x @var{B} logical: the entries of each table.
 ## @end deftypefn
