@@ -123,7 +123,7 @@ function brdf_export (model, file, format)
         txt = shader_model (model, def, name);
       endif
   endswitch
-  atomic_write (file, "brdf_export", @(fid) write_text (fid, txt));
+  __lafortune_write__ (file, "brdf_export", "text", txt);
 endfunction
 
 ## the format of FILE's extension

@@ -42,7 +42,7 @@
 ##
 ## Errors have the identifiers @code{lafortune:badFile},
 ## @code{lafortune:badImage}, @code{lafortune:badExposure} and
-## @code{lafortune:writeFailed}.
+## @code{lafortune:unwritable} (the file could not be written; an earlier file is left as it was).
 ##
 ## Example:
 ##
@@ -72,24 +72,7 @@ function stops = img_write_png (file, img, exposure = 0)
   endif
   [rgb, exposure] = tonemap (img, exposure, "img_write_png");
 
-  ## Temporary name in the target folder; keep ".png" at the end.
-  [~, tag] = fileparts (tempname ());
-  tmp = [file ".tmp" tag ".png"];
-  try
-    imwrite (rgb, tmp, "png");
-  catch err
-    if (exist (tmp, "file"))
-      unlink (tmp);
-    endif
-    error ("lafortune:writeFailed", "img_write_png: cannot write '%s': %s",
-           file, err.message);
-  end_try_catch
-  [st, msg] = rename (tmp, file);
-  if (st != 0)
-    unlink (tmp);
-    error ("lafortune:writeFailed", "img_write_png: cannot write '%s': %s",
-           file, msg);
-  endif
+  __lafortune_write__ (file, "img_write_png", "file", @(tmp) imwrite (rgb, tmp, "png"));
 
   if (nargout > 0)
     stops = exposure;
@@ -180,7 +163,7 @@ endfunction
 %!   unlink (f);
 %! end_unwind_protect
 
-## Failed writes: writeFailed, the old file stays, no temporary file left.
+## Failed writes: unwritable, the old file stays, no temporary file left.
 %!test
 %! d = tempname ();
 %! mkdir (d);
@@ -192,9 +175,9 @@ endfunction
 %!   check_id ("lafortune:badExposure", @img_write_png, f, ones (2, 2, 3), "x");
 %!   assert (imread (f), old);
 %!   mkdir (fullfile (d, "sub.png"));
-%!   check_id ("lafortune:writeFailed", @img_write_png, fullfile (d, "sub.png"),
+%!   check_id ("lafortune:unwritable", @img_write_png, fullfile (d, "sub.png"),
 %!             ones (2, 2, 3));
-%!   check_id ("lafortune:writeFailed", @img_write_png,
+%!   check_id ("lafortune:unwritable", @img_write_png,
 %!             fullfile (d, "missing", "x.png"), ones (2, 2, 3));
 %!   lst = dir (d);
 %!   assert ({lst.name}, {".", "..", "keep.png", "sub.png"});

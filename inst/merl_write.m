@@ -48,9 +48,9 @@ function merl_write (file, brdf)
     endfor
     stored(:,c) = s;
   endfor
-  atomic_write (file, "merl_write",
-                @(fid) 4 * fwrite (fid, dims, "int32") + 8 * fwrite (fid, stored(:), "float64"),
-                "ieee-le");
+  __lafortune_write__ (file, "merl_write",
+                       @(fid) 4 * fwrite (fid, dims, "int32") + 8 * fwrite (fid, stored(:), "float64"),
+                       "ieee-le");
 endfunction
 
 %!test

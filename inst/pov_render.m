@@ -236,26 +236,13 @@ function [img, info] = pov_render (scene, material, varargin)
     endfor
     if (! isempty (opt.keep))
       pov = fullfile (d, [base ".pov"]);
-      tmp = atomic_tmp (opt.keep, fname);
-      [ok, msg] = copyfile (pov, tmp, "f");
-      if (! ok)
-        unlink (tmp);
-        error ("lafortune:unwritable", "%s: cannot copy the scene to '%s': %s", fname,
-               opt.keep, msg);
-      endif
-      atomic_commit (tmp, opt.keep, fname);
+      __lafortune_write__ (opt.keep, fname, "file", @(tmp) copyfile (pov, tmp, "f"));
       if (M(1).K)                             # the lights' files, beside it
         kd = fileparts (opt.keep);
         for k = 1:M(1).K
           inc = M(1).info.includes{k};
-          tmp = atomic_tmp (fullfile (kd, inc), fname);
-          [ok, msg] = copyfile (fullfile (d, inc), tmp, "f");
-          if (! ok)
-            unlink (tmp);
-            error ("lafortune:unwritable", "%s: cannot copy '%s' beside '%s': %s", fname,
-                   inc, opt.keep, msg);
-          endif
-          atomic_commit (tmp, fullfile (kd, inc), fname);
+          __lafortune_write__ (fullfile (kd, inc), fname, "file",
+                               @(tmp) copyfile (fullfile (d, inc), tmp, "f"));
         endfor
       endif
     endif

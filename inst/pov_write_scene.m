@@ -231,7 +231,7 @@ function info = pov_write_scene (scene, material, file, varargin)
   parts = [{pov_sdl("header", scene, material, opt, T.tabs, T.rng_i, T.rng_o, T.peak, T.C), ...
             pov_sdl("camera", cam, scene), pov_sdl("light", scene, L, cam)}, ...
            T.body, {pov_sdl("texture", find (T.kept)), osdl}];
-  atomic_write (file, fname, @(fid) write_text (fid, parts));
+  __lafortune_write__ (file, fname, "text", parts);
   d = dir (file);
   tabs = T.tabs;
   info = struct ("file", file, "bytes", d.bytes, "terms", tabs,
@@ -446,7 +446,7 @@ function info = write_lights (scene, material, file, opt, cam, kind, t0)
       parts = {head, pov_sdl("texture", [])};
     endif
     f = fullfile (dd, incs{k});
-    atomic_write (f, fname, @(fid) write_text (fid, parts));
+    __lafortune_write__ (f, fname, "text", parts);
     d = dir (f);
     bytes += d.bytes;
   endfor
@@ -461,7 +461,7 @@ function info = write_lights (scene, material, file, opt, cam, kind, t0)
   endif
   [osdl, nfd] = pov_sdl ("objects", scene.objects, keep, faces);
   parts = {pov_sdl("frames", scene, material, K, base), pov_sdl("camera", cam, scene), osdl};
-  atomic_write (file, fname, @(fid) write_text (fid, parts));
+  __lafortune_write__ (file, fname, "text", parts);
   d = dir (file);
   info = struct ("file", file, "bytes", bytes + d.bytes, "terms", [], "entries", entries,
                  "gamma", [], "ti_range", [], "to_range", [], "peak", peak, "level", [],

@@ -103,10 +103,7 @@ for i = 1:numel (names)
   for r = 1:rows (R)
     txt = [txt sprintf("%s\t%s\t%d\t%.4f\t%.5f\t%.4f\t%.3f\t%.2f\t%.4f\n", R{r,:})];
   endfor
-  fid = fopen ([f ".tmp"], "w");
-  fputs (fid, txt);
-  fclose (fid);
-  rename ([f ".tmp"], f);
+  __lafortune_write__ (f, "study_scene_fits", "text", txt);
 endfor
 
 ## the medians

@@ -21,23 +21,9 @@ function plot_save (hf, file, fname)
   if (! strcmpi (ext, ".png"))
     error ("lafortune:badFile", "%s: FILE must end in .png, got '%s'", fname, file);
   endif
-  tmp = atomic_tmp (file, fname);
   device = "-dpng";
   if (strcmp (get (hf, "__graphics_toolkit__"), "gnuplot"))
     device = "-dpngcairo";
   endif
-  try
-    print (hf, device, "-r90", tmp);
-  catch err
-    unlink (tmp);
-    error ("lafortune:unwritable", "%s: cannot print the figure to '%s': %s",
-           fname, file, err.message);
-  end_try_catch
-  s = dir (tmp);
-  if (isempty (s) || s.bytes == 0)
-    unlink (tmp);
-    error ("lafortune:unwritable", "%s: printing the figure to '%s' gave an empty file",
-           fname, file);
-  endif
-  atomic_commit (tmp, file, fname);
+  __lafortune_write__ (file, fname, "file", @(tmp) print (hf, device, "-r90", tmp));
 endfunction
