@@ -150,7 +150,7 @@ function format = format_of (file, formats)
 endfunction
 
 function txt = json_text (m, name)
-  hex = @(v) cellstr (num2hex (v(:)))';
+  hex = @(v) hex_of (v.');
   s = struct ("format", "lafortune-model", "version", 1, "name", name,
               "nlobes", rows (m.Cxy),
               "formula", "f = rho_d/pi + sum_k max(Cxy_k*(ux*vx + uy*vy) + Cz_k*uz*vz, 0)^e_k, per channel R, G, B",

@@ -191,6 +191,7 @@ endfunction
 %! r = brdf_import (f);
 %! assert (r.name, "lafortune-model");
 %! assert (isequal (r.rho_d, m.rho_d) && isequal (size (r.Cxy), [0 3]));
+%! assert (isempty (strfind (fileread (f), '[""]')));     # no lobes: an empty list, as every type
 %! g = brdf_model ("ward", "rho_d", [0.1 0.2 0.3]);
 %! brdf_export (g, f, "json");
 %! r = brdf_import (f);
