@@ -74,12 +74,7 @@ function brdf_export (model, file, format)
     print_usage ();
   endif
   [model, def] = check_model (model, "brdf_export");
-  lafortune = isempty (def.lobe);
-  if (lafortune)
-    name = "lafortune-model";
-  else
-    name = [def.type "-model"];
-  endif
+  name = [def.type "-model"];
   if (isfield (model, "name") && ischar (model.name) && ! isempty (model.name))
     ## one line of printable text: a control character (a newline) would end
     ## the comment it is written in, and BRDF Explorer refuses such a file
@@ -105,23 +100,11 @@ function brdf_export (model, file, format)
   endif
   switch (format)
     case "json"
-      if (lafortune)
-        txt = json_text (model, name);
-      else
-        txt = json_model (model, def, name);
-      endif
+      txt = json_text (model, def, name);
     case "text"
-      if (lafortune)
-        txt = table_text (model, name);
-      else
-        txt = table_model (model, def, name);
-      endif
+      txt = table_text (model, def, name);
     case "brdfexplorer"
-      if (lafortune)
-        txt = brdf_text (model, name);
-      else
-        txt = shader_model (model, def, name);
-      endif
+      txt = shader_text (model, def, name);
   endswitch
   __lafortune_write__ (file, "brdf_export", "text", txt);
 endfunction
@@ -149,82 +132,19 @@ function format = format_of (file, formats)
   format = formats{k};
 endfunction
 
-function txt = json_text (m, name)
-  hex = @(v) hex_of (v.');
-  s = struct ("format", "lafortune-model", "version", 1, "name", name,
-              "nlobes", rows (m.Cxy),
-              "formula", "f = rho_d/pi + sum_k max(Cxy_k*(ux*vx + uy*vy) + Cz_k*uz*vz, 0)^e_k, per channel R, G, B",
-              "rho_d", m.rho_d, "Cxy", {m.Cxy}, "Cz", {m.Cz}, "e", {m.e},
-              "exact", struct ("rho_d", {hex(m.rho_d)}, "Cxy", {hex(m.Cxy')},
-                               "Cz", {hex(m.Cz')}, "e", {hex(m.e')}));
-  txt = [jsonencode(s) "\n"];
-endfunction
+## The writers walk the type's definition (model_def): its fields, its
+## format tag, its table's row names and its shader's parts.
 
-function txt = table_text (m, name)
-  n = rows (m.Cxy);
-  txt = sprintf ("# Lafortune model: %s, %d lobe(s), one column per channel\n", name, n);
-  txt = [txt "# f = rho_d/pi + sum_k max(o_xy,k (ux vx + uy vy) + o_z,k uz vz, 0)^n_k\n"];
-  txt = [txt sprintf("%-14s %14s %14s %14s\n", "parameter", "R", "G", "B")];
-  txt = [txt sprintf("%-14s %14.6g %14.6g %14.6g\n", "rho_d", m.rho_d)];
-  for k = 1:n
-    txt = [txt sprintf("%-14s %14.6g %14.6g %14.6g\n", sprintf ("lobe %d o_xy", k), m.Cxy(k,:))];
-    txt = [txt sprintf("%-14s %14.6g %14.6g %14.6g\n", sprintf ("lobe %d o_z", k), m.Cz(k,:))];
-    txt = [txt sprintf("%-14s %14.6g %14.6g %14.6g\n", sprintf ("lobe %d n", k), m.e(k,:))];
-  endfor
-endfunction
-
-function txt = brdf_text (m, name)
-  n = rows (m.Cxy);
-  ch = "rgb";
-  par = "";
-  par = [par slider("rho_d_r", 0, 1, m.rho_d(1)) slider("rho_d_g", 0, 1, m.rho_d(2)) ...
-         slider("rho_d_b", 0, 1, m.rho_d(3))];
-  body = "    vec3 f = vec3(rho_d_r, rho_d_g, rho_d_b) / PI;\n";
-  for k = 1:n
-    for c = 1:3
-      par = [par slider(sprintf("Cxy%d_%s", k, ch(c)), -2, 2, m.Cxy(k,c))];
-      par = [par slider(sprintf("Cz%d_%s", k, ch(c)), -2, 2, m.Cz(k,c))];
-      par = [par slider(sprintf("e%d_%s", k, ch(c)), 0, 100, m.e(k,c))];
-    endfor
-    body = [body sprintf(["    f += vec3(lobe(Cxy%d_r, Cz%d_r, e%d_r, sxy, sz),\n" ...
-                          "              lobe(Cxy%d_g, Cz%d_g, e%d_g, sxy, sz),\n" ...
-                          "              lobe(Cxy%d_b, Cz%d_b, e%d_b, sxy, sz));\n"], ...
-                         k, k, k, k, k, k, k, k, k)];
-  endfor
-  txt = ["analytic\n\n" ...
-         sprintf("# Lafortune model '%s', %d lobe(s), exported by lafortune_export\n", name, n) ...
-         "# f = rho_d/pi + sum_k max(Cxy_k (ux vx + uy vy) + Cz_k uz vz, 0)^e_k per channel\n\n" ...
-         "::begin parameters\n" par "::end parameters\n\n" ...
-         "::begin shader\n\n" ...
-         "const float PI = 3.14159265358979323846;\n\n" ...
-         "float lobe(float cxy, float cz, float e, float sxy, float sz)\n{\n" ...
-         "    float b = cxy * sxy + cz * sz;\n" ...
-         "    return b > 0.0 ? pow(b, e) : 0.0;\n}\n\n" ...
-         "vec3 BRDF( vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y )\n{\n" ...
-         "    float ln = dot(L, N);\n" ...
-         "    float vn = dot(V, N);\n" ...
-         "    if (ln <= 0.0 || vn <= 0.0) return vec3(0.0);   // below the horizon, as lafortune_eval\n" ...
-         "    // ux vx + uy vy without X and Y (BRDF Explorer's lit sphere has NaN there at N = +-Y)\n" ...
-         "    float sxy = dot(L, V) - ln * vn;\n" ...
-         "    float sz = ln * vn;\n" ...
-         body ...
-         "    return f;\n}\n\n" ...
-         "::end shader\n"];
-endfunction
-
-function s = slider (nm, lo, hi, v)
-  lo = min (lo, floor (v));
-  hi = max (hi, ceil (2 * v));
-  s = sprintf ("float %s %.9g %.9g %.17g\n", nm, lo, hi, v);
-endfunction
-
-
-## the JSON of a physically based model: its type, and its fields in
-## def.fields order, readable and as exact hex strings
-function txt = json_model (m, def, name)
-  s = struct ("format", "brdf-model", "version", 1, "type", def.type, "name", name,
-              "nlobes", rows (m.(def.fields{2})),
-              "formula", [def.formula ", per channel R, G, B"]);
+## the JSON of a model: its format tag (and type, for "brdf-model"), and its
+## fields in def.fields order, readable and as exact hex strings
+function txt = json_text (m, def, name)
+  s = struct ("format", def.tag, "version", 1);
+  if (strcmp (def.tag, "brdf-model"))
+    s.type = def.type;
+  endif
+  s.name = name;
+  s.nlobes = rows (m.(def.fields{2}));
+  s.formula = [def.formula ", per channel R, G, B"];
   ex = struct ();
   for f = def.fields
     s.(f{1}) = m.(f{1});
@@ -244,82 +164,66 @@ function h = hex_of (v)
   endif
 endfunction
 
-function txt = table_model (m, def, name)
+## a readable table: the type's head, then rho_d and each lobe's parameters
+## under the table's names, one column per channel
+function txt = table_text (m, def, name)
   n = rows (m.(def.fields{2}));
-  txt = sprintf ("# %s model (type %s): %s, %d lobe(s), one column per channel\n",
-                 def.title, def.type, name, n);
-  txt = [txt "# " def.formula "\n"];
-  txt = [txt "# ci, co = cos theta_i, cos theta_o; ch = cos theta_h; cd = cos theta_d\n"];
-  txt = [txt sprintf("%-14s %14s %14s %14s\n", "parameter", "R", "G", "B")];
-  txt = [txt sprintf("%-14s %14.6g %14.6g %14.6g\n", "rho_d", m.rho_d)];
+  row = @(label, v) sprintf ("%-14s %14.6g %14.6g %14.6g\n", label, v);
+  txt = [sprintf(def.table.head, name, n) ...
+         sprintf("%-14s %14s %14s %14s\n", "parameter", "R", "G", "B") row("rho_d", m.rho_d)];
   for k = 1:n
-    for f = def.fields(2:end)
-      txt = [txt sprintf("%-14s %14.6g %14.6g %14.6g\n", sprintf ("lobe %d %s", k, f{1}),
-                         m.(f{1})(k,:))];
+    for j = 1:numel (def.table.labels)
+      txt = [txt row(sprintf ("lobe %d %s", k, def.table.labels{j}), m.(def.fields{j+1})(k,:))];
     endfor
   endfor
 endfunction
 
-## BRDF Explorer's shader of a physically based model: the type's lobe
-## (def.glsl) as a function of ks, the shape parameters and the angles,
-## which BRDF computes from L, V and N alone
-function txt = shader_model (m, def, name)
-  n = rows (m.ks);
+## BRDF Explorer's shader: a slider for every parameter of every channel, the
+## type's lobe function called per lobe and channel with its parameters and
+## the geometry's arguments, which BRDF computes from L, V and N alone
+function txt = shader_text (m, def, name)
+  sh = def.shader;
+  n = rows (m.(def.fields{2}));
   ch = "rgb";
-  shape = def.shape;
-  geo = {"ci", "co", "hh", "ch", "t2", "cd", "s5"};
-  args = strjoin (strcat ({"float "}, [{"ks"}, shape, geo]), ", ");
-  par = [slider("rho_d_r", 0, 1, m.rho_d(1)) slider("rho_d_g", 0, 1, m.rho_d(2)) ...
-         slider("rho_d_b", 0, 1, m.rho_d(3))];
+  lob = def.fields(2:end);
+  par = [slider("rho_d_r", [0 1 NaN], m.rho_d(1)) slider("rho_d_g", [0 1 NaN], m.rho_d(2)) ...
+         slider("rho_d_b", [0 1 NaN], m.rho_d(3))];
   body = "    vec3 f = vec3(rho_d_r, rho_d_g, rho_d_b) / PI;\n";
   for k = 1:n
     calls = cell (1, 3);
     for c = 1:3
-      nm = {sprintf("ks_%d_%s", k, ch(c))};
-      par = [par slider(nm{1}, 0, 1, m.ks(k,c))];
-      for j = 1:numel (shape)
-        nm{end+1} = sprintf ("%s_%d_%s", shape{j}, k, ch(c));
-        par = [par shape_slider(nm{end}, def, j, m.(shape{j})(k,c))];
+      nm = cell (1, numel (lob));
+      for j = 1:numel (lob)
+        nm{j} = sprintf (sh.name, lob{j}, k, ch(c));
+        par = [par slider(nm{j}, sh.slider(j,:), m.(lob{j})(k,c))];
       endfor
-      calls{c} = sprintf ("lobe(%s, %s)", strjoin (nm, ", "), strjoin (geo, ", "));
+      calls{c} = sprintf ("lobe(%s, %s)", strjoin (nm, ", "), strjoin (sh.args, ", "));
     endfor
     body = [body "    f += vec3(" strjoin(calls, ",\n              ") ");\n"];
   endfor
-  txt = ["analytic\n\n" ...
-         sprintf("# %s model '%s' (type %s), %d lobe(s), exported by lafortune_export\n",
-                 def.title, name, def.type, n) ...
-         "# " def.formula ", per channel\n" ...
-         "# ci, co: cos theta_i, cos theta_o; hh = |L+V|^2; ch = cos theta_h; t2 = tan^2 theta_h;\n" ...
-         "# cd = cos theta_d = L.H; s5 = (1 - cd)^5\n\n" ...
+  txt = ["analytic\n\n" sprintf(sh.head, name, n) ...
          "::begin parameters\n" par "::end parameters\n\n" ...
          "::begin shader\n\n" ...
          "const float PI = 3.14159265358979323846;\n\n" ...
-         "// one lobe of one channel: ks times the lobe of unit amplitude\n" ...
-         "float lobe(" args ")\n{\n" ...
-         def.glsl ...
-         "    return ks * g;\n}\n\n" ...
+         sh.lobe ...
          "vec3 BRDF( vec3 L, vec3 V, vec3 N, vec3 X, vec3 Y )\n{\n" ...
-         "    float ci = dot(L, N);\n" ...
-         "    float co = dot(V, N);\n" ...
-         "    if (ci <= 0.0 || co <= 0.0) return vec3(0.0);   // below the horizon, as material_eval\n" ...
-         "    float hh = max(2.0 + 2.0 * dot(L, V), 1.0e-30);   // |L + V|^2\n" ...
-         "    float s = ci + co;\n" ...
-         "    float ch = s / sqrt(hh);\n" ...
-         "    float t2 = max(hh - s * s, 0.0) / (s * s);\n" ...
-         "    float cd = min(sqrt(hh) / 2.0, 1.0);\n" ...
-         "    float s5 = pow(1.0 - cd, 5.0);\n" ...
+         sh.geometry ...
          body ...
          "    return f;\n}\n\n" ...
          "::end shader\n"];
 endfunction
 
-## a slider for shape parameter J of DEF: from its lower bound to twice the
-## value, at least to the largest start of the fit (1000 at most), never
-## beyond its upper bound
-function s = shape_slider (nm, def, j, v)
-  lo = def.lo(j+1);
-  top = min (max (def.starts{j}), 1000);
-  hi = min (def.hi(j+1), max (top, 2 * v));
+## a slider for value V over R = [lo, hi, cap]: with no cap (NaN) from lo to
+## hi, widened to hold V and twice V; with a cap (a bound of the parameter)
+## from lo to hi or twice V, never beyond the cap
+function s = slider (nm, r, v)
+  if (isnan (r(3)))
+    lo = min (r(1), floor (v));
+    hi = max (r(2), ceil (2 * v));
+  else
+    lo = r(1);
+    hi = min (r(3), max (r(2), 2 * v));
+  endif
   s = sprintf ("float %s %.9g %.9g %.17g\n", nm, lo, hi, v);
 endfunction
 
