@@ -125,7 +125,7 @@ NO_STEP_GOALS := all deps check bench dist install clean distclean
 ifneq ($(filter-out $(NO_STEP_GOALS),$(MAKECMDGOALS)),)
 build/deps.mk: $(wildcard scripts/*.m inst/*.m inst/private/*.m src/*.cc) inst inst/private scripts
 	@mkdir -p build
-	@$(OCT) --path $(CURDIR)/scripts --eval 'repro_deps ("$@")'
+	@$(OCT) --path $(CURDIR)/inst --path $(CURDIR)/scripts --eval 'repro_deps ("$@")'
 include build/deps.mk
 endif
 # FILE_$(1) of material $(2) under folder $(3); the records step $(1) reads
