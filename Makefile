@@ -123,7 +123,7 @@ octmat = if [ -s $(call queue_of,$(1),$(2)) ]; then $(3) POV_THREADS=$(pov_threa
 # may call it.  Without it (the goals below need no step) no step rule exists.
 NO_STEP_GOALS := all deps check bench dist install clean distclean
 ifneq ($(filter-out $(NO_STEP_GOALS),$(MAKECMDGOALS)),)
-build/deps.mk: $(wildcard scripts/*.m inst/*.m inst/private/*.m src/*.cc) inst inst/private scripts
+build/deps.mk: $(wildcard scripts/*.m inst/*.m inst/*/*.m inst/*/private/*.m src/*.cc) inst $(wildcard inst/*/ inst/*/private/) scripts
 	@mkdir -p build
 	@$(OCT) --path $(CURDIR)/inst --path $(CURDIR)/scripts --eval 'repro_deps ("$@")'
 include build/deps.mk

@@ -13,7 +13,7 @@
 ##                   formulas) compiled, for every sample: this project's own
 ##                   C++ of the published formulas, not the reader's code
 ##   reader, Octave  merl_eval (..., "reference"): the same formulas
-##                   vectorised in Octave (inst/private/merl_index_ref.m),
+##                   vectorised in Octave (inst/merl/private/merl_index_ref.m),
 ##                   what merl_eval falls back to without the oct-file
 ##
 ## Times are medians of repeats interleaved round-robin (so load on a shared

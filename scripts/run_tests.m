@@ -113,10 +113,17 @@ else
   pkg ("load", "optim");
 endif
 
+## the package's functions (inst/ and its folders by area, not their
+## private folders), found on the path by name; an internal function
+## (__lafortune_x__, a helper several areas share, tested through the public
+## ones as the private helpers are) only when it has test blocks of its own
 names = {};
-d = dir (fullfile (top, "inst", "*.m"));
+d = [glob(fullfile (top, "inst", "*.m")); glob(fullfile (top, "inst", "*", "*.m"))];
 for k = 1:numel (d)
-  [~, names{end+1}] = fileparts (d(k).name);
+  [~, nm] = fileparts (d{k});
+  if (! strncmp (nm, "__", 2) || ! isempty (regexp (fileread (d{k}), '(^|\n)%!(test|error|assert)', "once")))
+    names{end+1} = nm;
+  endif
 endfor
 d = dir (fullfile (top, "src", "*.cc"));
 for k = 1:numel (d)

@@ -1,7 +1,7 @@
 // Copyright (C) 2026 The lafortune developers
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// __lafortune_core__: inst/private/lafortune_core.m's arithmetic, compiled
+// __lafortune_core__: inst/models/__lafortune_lafortune_core__.m's arithmetic, compiled
 // (the fit spends a third of its time there).  lafortune_core.m stays the
 // one evaluation of the model: it calls this when it is built, and its own
 // Octave code is the reference, which the tests compare with this bit for

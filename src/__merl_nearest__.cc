@@ -10,7 +10,7 @@
 // half vector along the normal (theta_h < 1e-6: phi_h is the atan2 of
 // rounding residues) or wi close to wo (theta_d < 1e-5: so is phi_d) is
 // placed with the reader's own sequence of operations (its two Rodrigues
-// rotations, term by term, as inst/private/merl_index_ref.m), written here
+// rotations, term by term, as inst/merl/private/merl_index_ref.m), written here
 // from the published formulas.  Built with -ffp-contract=off (src/Makefile)
 // so that no multiply-add is fused: every operation of that path rounds as
 // Octave's element-wise operations do.

@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // __model_core__: the value of a physically based model's channel, compiled:
-// inst/private/model_core.m's sum (rho_d / pi + sum_k ks_k g_k) with the lobe
-// g of each type's definition (inst/private/brdf_TYPE.m) and the angles of
+// inst/models/__lafortune_model_core__.m's sum (rho_d / pi + sum_k ks_k g_k) with the lobe
+// g of each type's definition (inst/models/private/brdf_TYPE.m) and the angles of
 // brdf_geom.m, for the renderers' shading from a cached trace (the private
 // model_value calls it when it is built).  The Octave code stays the
 // reference: every operation is the one those files make, in their order,

@@ -1,7 +1,7 @@
 // Copyright (C) 2026 The lafortune developers
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// __pov_knots__: the greedy refinement of one table in inst/private/pov_knots.m
+// __pov_knots__: the greedy refinement of one table in inst/pov/private/pov_knots.m
 // (its subfunctions greedy_one and interval_err), compiled: pov_write_scene
 // spends most of its time there, in a thousand small Octave calls per table.
 // pov_knots.m stays the definition and the reference: it calls this when it

@@ -25,7 +25,7 @@
 
 %!function [st, out] = octave_run (code, env)
 %!  ## a fresh octave-cli with the package's folder on the path
-%!  d = fileparts (which ("plot_plane"));
+%!  d = fileparts (which ("__lafortune_write__"));   # the package root (PKG_ADD adds its folders)
 %!  scr = [tempname() ".m"];
 %!  fid = fopen (scr, "w");
 %!  fprintf (fid, "addpath ('%s');\n%s\n", d, code);

@@ -60,7 +60,7 @@
 %!     sxy(1:977:end) = NaN; sz(5:1013:end) = 0;
 %!     p = [0.3; -1; 0.9; 40; -0.7; 0.8; 3e3; 0.2; 0.5; 1.5];
 %!     fc = __lafortune_core__ (p, sxy, sz);
-%!     fo = __octave_engine (@() lafortune_core (p, sxy, sz));
+%!     fo = __octave_engine (@() __lafortune_lafortune_core__ (p, sxy, sz));
 %!     assert (__same_bits (fc, fo), sprintf ("%d rows: the engines differ", n));
 %!   endfor
 %! unwind_protect_cleanup
@@ -97,18 +97,18 @@
 %!     sz(k(end/2+1:end)) = special(randi (numel (special), numel (k(end/2+1:end)), 1));
 %!     [fc, Jc] = __lafortune_core__ (p, sxy, sz);
 %!     fc1 = __lafortune_core__ (p, sxy, sz);
-%!     [fo, Jo] = __octave_engine (@() lafortune_core (p, sxy, sz));
-%!     fo1 = __octave_engine (@() lafortune_core (p, sxy, sz));
+%!     [fo, Jo] = __octave_engine (@() __lafortune_lafortune_core__ (p, sxy, sz));
+%!     fo1 = __octave_engine (@() __lafortune_lafortune_core__ (p, sxy, sz));
 %!     assert (__same_bits (fc, fo) && __same_bits (Jc, Jo) && __same_bits (fc1, fo1),
 %!             sprintf ("trial %d, p = %s: the engines differ", trial, mat2str (p', 4)));
 %!   endfor
 %!   ## exactly at the cap (e log b = 300: the lobe is live there)
 %!   [fc, Jc] = __lafortune_core__ ([0; 1; 0; 300], exp (1), 0);
-%!   [fo, Jo] = __octave_engine (@() lafortune_core ([0; 1; 0; 300], exp (1), 0));
+%!   [fo, Jo] = __octave_engine (@() __lafortune_lafortune_core__ ([0; 1; 0; 300], exp (1), 0));
 %!   assert (__same_bits (fc, fo) && __same_bits (Jc, Jo));
 %!   assert (Jc(2) > 0);
 %!   ## the Jacobian is finite where the lobe is capped, even for e = 1e200
-%!   [~, J] = __octave_engine (@() lafortune_core ([0; 1; 0; 1e200], 2, 0));
+%!   [~, J] = __octave_engine (@() __lafortune_lafortune_core__ ([0; 1; 0; 1e200], 2, 0));
 %!   assert (J, [1/pi 0 0 0]);
 %! unwind_protect_cleanup
 %!   cd (here);
@@ -172,7 +172,7 @@
 %! here = pwd ();
 %! state = rand ("state");
 %! unwind_protect
-%!   cd (fullfile (fileparts (which ("lafortune_eval")), "private"));
+%!   cd (fullfile (fileparts (which ("pov_render")), "private"));
 %!   rand ("state", 3);
 %!   x = sort ([0; rand(298, 1); 1]) * pi / 2;
 %!   c = cos (x);
@@ -277,7 +277,7 @@
 %! here = pwd ();
 %! state = rand ("state");
 %! unwind_protect
-%!   cd (fullfile (fileparts (which ("lafortune_eval")), "private"));
+%!   cd (fullfile (fileparts (which ("rt_render")), "private"));
 %!   rand ("state", 5);
 %!   n = 131073;
 %!   ci = [rand(n - 3, 1) * 0.999 + 0.001; 1; 1e-3; 0.5];
@@ -286,7 +286,7 @@
 %!   w = ci .* co + sqrt (1 - ci .^ 2) .* sqrt (1 - co .^ 2) .* cos (ph);
 %!   X = [ci, co, w];
 %!   for t = {"blinnphong", "ward", "cooktorrance", "ggx", "ashikhminshirley"}
-%!     def = model_def (t{1});
+%!     def = __lafortune_model_def__ (t{1});
 %!     ns = numel (def.shape);
 %!     q = zeros (ns, 3);
 %!     for j = 1:ns
@@ -298,7 +298,7 @@
 %!       endif
 %!     endfor
 %!     p = [0.7; reshape([[0; 1.3; 0.2], q'].', [], 1)];
-%!     a = model_core (def, p, X);
+%!     a = __lafortune_model_core__ (def, p, X);
 %!     b = model_value (def, p, X);
 %!     assert (__same_bits (a, b), "%s: model_value differs from model_core", t{1});
 %!     assert (__same_bits (__octave_engine (@() model_value (def, p, X), "__model_core__"), a));

@@ -8,11 +8,12 @@
 ## point to.
 
 %!function [files, lines] = comment_lines ()
-%!  ## every .m file of the package's folder and its private folder (the
-%!  ## installed package under make check), and their comment lines outside
-%!  ## the test blocks
-%!  d = fileparts (which ("merl_read"));
-%!  files = [glob(fullfile (d, "*.m")); glob(fullfile (d, "private", "*.m"))];
+%!  ## every .m file of the package: its folder, its folders by area and
+%!  ## their private folders (the installed package under make check), and
+%!  ## their comment lines outside the test blocks
+%!  d = fileparts (which ("__lafortune_write__"));
+%!  files = [glob(fullfile (d, "*.m")); glob(fullfile (d, "*", "*.m"));
+%!           glob(fullfile (d, "*", "private", "*.m"))];
 %!  lines = cell (numel (files), 1);
 %!  for i = 1:numel (files)
 %!    t = strsplit (fileread (files{i}), "\n");

@@ -108,8 +108,8 @@
 %! opt = struct ("entries", 64, "knots", "adaptive", "table_tol", 1e-3, "pad", 0.02);
 %! here = pwd ();
 %! unwind_protect
-%!   cd (fullfile (fileparts (which ("lafortune_eval")), "private"));
-%!   cam = scene_camera (sc);
+%!   cd (fullfile (fileparts (which ("pov_render")), "private"));
+%!   cam = __lafortune_scene_camera__ (sc);
 %!   L = sc.light.direction / norm (sc.light.direction);
 %!   C = pov_tables ("inner_coord", false, L, -cam.f);
 %!   gam = acos (L * -cam.f');

@@ -29,7 +29,7 @@
 %!   assert (J, Jn, 1e-6 * max (abs (J(:))));
 %!   ## the fold is exact: each channel's Lafortune lobes give the same values
 %!   P = shared_lobes ("split", p, 2, 3);
-%!   F = cell2mat (cellfun (@(q) lafortune_core (q, x(:,1), x(:,2)), P(:), "uniformoutput", false));
+%!   F = cell2mat (cellfun (@(q) __lafortune_lafortune_core__ (q, x(:,1), x(:,2)), P(:), "uniformoutput", false));
 %!   assert (F, f, 1e-12 * max (f));
 %!   assert (P{3}(5:7), [0; 0; 3]);        # amplitude 0: no lobe, exponent kept
 %!   assert (shared_lobes ("join", P, 2), p, 1e-12);
