@@ -59,6 +59,7 @@ function def = physical (def)
   def.formula = ["f = rho_d/pi + sum_k " def.formula];
   def.reduce = "(cos theta_i, cos theta_o, wi.wo)";
   def.lobe = str2func (["brdf_" type]);
+  def.coords = @fit_phys;
   def.tag = "brdf-model";
   pc = @(s) strrep (s, "%", "%%");        # text put into a format
   def.table = struct ("head", [sprintf("# %s model (type %s): ", pc (def.title), type) ...

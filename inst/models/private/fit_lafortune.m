@@ -17,7 +17,8 @@
 
 function [model, models, info] = fit_lafortune (S, wt, n0, nlobes, opt)
   N = rows (S.wi);
-  xall = [S.wi(:,1) .* S.wo(:,1) + S.wi(:,2) .* S.wo(:,2), S.wi(:,3) .* S.wo(:,3)];
+  def = __lafortune_model_def__ ("lafortune");
+  xall = def.coords ("x", [], S);
   ## a sample of weight 0 is left out of the fit; the metrics, the scale
   ## and the scaled data (fit_setup)
   keep = wt > 0;
@@ -75,12 +76,12 @@ function [model, models, info] = fit_lafortune (S, wt, n0, nlobes, opt)
       p0 = plain_start (nlobes, 1);
     endif
     if (! isempty (p0))
-      p0 = fit_unscale (p0, 1 / sc(c));
+      p0 = def.coords ("unscale", [], p0, 1 / sc(c));
     endif
     ch = fit_channel (D, R, nlobes, opt, G, p0);
     for k = 1:numel (ch.ps)
       if (! isempty (ch.ps{k}))
-        models{k} = set_params (models{k}, c, fit_unscale (ch.ps{k}, sc(c)));
+        models{k} = set_params (models{k}, c, def.coords ("unscale", [], ch.ps{k}, sc(c)));
       endif
     endfor
     model = models{nlobes};
@@ -112,6 +113,7 @@ endfunction
 ## One channel's data D (fit_data, scaled units) and its coarse grid R
 function [D, R] = channel_data (Ss, Sf, fspec, pspec, sc, c, j, xc, xr, jg, jrep, opt)
   D = fit_data (fspec, c, j, xc, Ss.rgb(:,c), sc(c), pspec, Sf.rgb(:,c), "lafortune_fit");
+  D.def = __lafortune_model_def__ ("lafortune");       # the fit's coordinates
   R = D;
   if (rows (xr) != rows (xc))
     R = fit_data ("coarse", D, jg, jrep);
@@ -142,12 +144,12 @@ function [models, info, traces] = fit_shared (Ss, Sf, fspec, pspec, sc, iref, j,
     p0 = plain_start (nlobes, nch);
   endif
   if (! isempty (p0))
-    p0 = shared_lobes ("unscale", p0, 1 / s, iref, nch);
+    p0 = D.def.coords ("unscale", D, p0, 1 / s);
   endif
   ch = fit_channel (D, R, nlobes, opt, G, p0);
   for k = 1:numel (ch.ps)
     if (! isempty (ch.ps{k}))
-      P = shared_lobes ("split", shared_lobes ("unscale", ch.ps{k}, s, iref, nch), iref, nch);
+      P = shared_lobes ("split", D.def.coords ("unscale", D, ch.ps{k}, s), iref, nch);
       for i = 1:nch
         models{k} = set_params (models{k}, chs(i), P{i});
       endfor

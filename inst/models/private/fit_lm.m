@@ -35,15 +35,7 @@ function [p, iter, cvg, T] = fit_lm (D, p0, opt, t0 = [])
   endif
   rec = fit_recorder (t0, ftol);
   F = @(xx, pp) model_fun (D, pp, rec);
-  if (isfield (D, "def"))
-    [lb, ub] = fit_phys ("bounds", D, np);
-  elseif (D.nch == 1)
-    lb = -Inf (np, 1); ub = Inf (np, 1);
-    lb(1) = 0;
-    lb(4:3:end) = 0; ub(4:3:end) = 1e7;
-  else
-    [lb, ub] = shared_lobes ("bounds", np, D.nch);
-  endif
+  [lb, ub] = D.def.coords ("bounds", D, np);
   p0 = min (max (p0, lb), ub);
   options = struct ();
   if (opt.bounds)

@@ -40,7 +40,7 @@ function [models, info] = fit_model (S, wt, n0, def, nlobes, opt)
   [Srep, rep, names, Sf, Ss, sc, fspec, pspec] = deal (F.Srep, F.rep, F.names, F.Sf, F.Ss, F.sc,
                                                      F.fspec, F.pspec);
   shared = strcmp (opt.color, "shared");
-  X = [Sf.wi(:,3), Sf.wo(:,3), sum(Sf.wi .* Sf.wo, 2)];
+  X = def.coords ("x", [], Sf);
   [j, xc, how] = groups (X, wt(keep), opt.reduce);
   nan3 = nan (1, 3);
   info = struct ("type", def.type, "nlobes", nlobes, "weight", opt.weight, "color", opt.color,

@@ -5,6 +5,7 @@
 ## @deftypefnx {} {[@var{lb}, @var{ub}] =} fit_phys ("bounds", @var{D}, @var{np})
 ## @deftypefnx {} {@var{P} =} fit_phys ("split", @var{D}, @var{u})
 ## @deftypefnx {} {@var{u} =} fit_phys ("join", @var{D}, @var{P})
+## @deftypefnx {} {@var{X} =} fit_phys ("x", [], @var{S})
 ## The fit's coordinates of a physically based model (private; D.def from
 ## model_def, D.nch channels, rows of D.x the groups, values channel after
 ## channel as fit_stack stacks them).  @var{u} = [rho_d (nch); lobe 1:
@@ -13,10 +14,17 @@
 ## shared by R, G, B).  A shape parameter of scale "log" is moved as its
 ## logarithm (roughness and exponent stay > 0 and are fitted by their
 ## ratios), "lin" as it is.  "split" gives the model_core vector of each
-## channel (columns of @var{P}), "join" the inverse.
+## channel (columns of @var{P}), "join" the inverse; "x" what the model
+## sees of each pair of the table @var{S}, X = [cos theta_i, cos theta_o,
+## wi.wo] (the fit merges samples equal in it).
 ## @end deftypefn
 
 function varargout = fit_phys (what, D, arg)
+  if (strcmp (what, "x"))                # what the model sees of a pair
+    S = arg;
+    varargout = {[S.wi(:,3), S.wo(:,3), sum(S.wi .* S.wo, 2)]};
+    return;
+  endif
   def = D.def;
   nch = D.nch;
   ns = numel (def.shape);

@@ -23,8 +23,8 @@
 function P = fit_starts (D, p, refine = false)
   ## directions (Cxy, Cz) of the families: forward lobes from steep to flat,
   ## retro-reflective, near-normal
-  dirs = [-1 1; -1 0.7; -1 1.3; -1 0.4; -1 0.2; -1 2; 1 1; 0 1];
-  expo = 10 .^ (0:0.5:5);
+  dirs = D.def.starts.dirs;               # (brdf_lafortune)
+  expo = D.def.starts.expo;
   fcur = fit_eval (D, p);
   ## every candidate at once, one column each (family by family, each
   ## with every exponent)

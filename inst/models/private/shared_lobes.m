@@ -34,7 +34,7 @@
 ## @code{"bounds"}: rho >= 0, 0 <= e <= 1e7, t >= 0.  @code{"unscale"}: the
 ## parameters of the data divided by @var{s} (one scale for all channels)
 ## mapped back to the data's units (rho times s, the reference lobe's
-## direction times s^(1/e), as fit_unscale does).
+## direction times s^(1/e), as brdf_lafortune's coordinates do for one channel).
 ## @end deftypefn
 function varargout = shared_lobes (what, varargin)
   switch (what)
