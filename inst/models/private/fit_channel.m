@@ -63,8 +63,8 @@ function run = add_lobe (D, R, p, obj, opt, G, t0)
                 "full_iter", 0, "rejected", 0, "cvg", true);
   ## a warm-up run on R pays only when R is much smaller than D and an
   ## iteration on D costs much more than leasqr's fixed cost per iteration
-  ## (measured: about an SVD of groups x parameters^2 = 200000; on the
-  ## in-plane table, 6561 groups, from 2 lobes on); it stops at a looser
+  ## (WARMUP_COST, in groups x parameters^2, an SVD's cost: the README's
+  ## "Measurements behind the design" says where it was set); it stops at a looser
   ## tolerance, as it only brings the start closer.  Without one, the best
   ## start is refined on R (fit_starts)
   np = numel (p) + 2 + D.nch;
@@ -78,7 +78,7 @@ function run = add_lobe (D, R, p, obj, opt, G, t0)
   ## a warm-up ends by leasqr's own test (fit_lm): its last iteration and
   ## the dampings that iteration tries are on the coarse grid, where they
   ## cost little, and ending it one iteration earlier can cost the run on D
-  ## more (red-plastic, 3 lobes: 5 iterations on D more in one channel)
+  ## more iterations than it saves
   warm.flat = false;
   ntry = min (opt.tries, columns (starts));
   done = false (1, columns (starts));

@@ -16,9 +16,9 @@
 ## With @var{refine} true, the best start is then refined the same way on a
 ## finer grid around it: 9 directions within 0.35 rad of its own and 9
 ## exponents within half a decade, 8 per decade.  A start that no warm-up
-## run brings closer (fit_channel) needs that: on the in-plane tables of
-## both paper materials the first lobe's Levenberg-Marquardt run then takes
-## 4 to 6 iterations per channel instead of 8 to 10, to the same minimum.
+## run brings closer (fit_channel) needs that: the first lobe's
+## Levenberg-Marquardt run then takes fewer iterations to the same minimum
+## (README, "Measurements behind the design").
 ## @end deftypefn
 function P = fit_starts (D, p, refine = false)
   ## directions (Cxy, Cz) of the families: forward lobes from steep to flat,
