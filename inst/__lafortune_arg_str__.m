@@ -13,3 +13,8 @@ function s = __lafortune_arg_str__ (x)
     s = class (x);
   endif
 endfunction
+
+%!assert (__lafortune_arg_str__ ("ggx"), "ggx")
+%!assert (__lafortune_arg_str__ (3), "double")
+%!assert (__lafortune_arg_str__ ({1}), "cell")
+%!assert (__lafortune_arg_str__ (struct ()), "struct")

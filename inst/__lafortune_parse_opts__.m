@@ -26,3 +26,13 @@ function opt = __lafortune_parse_opts__ (args, fname, defaults)
     opt.(names{i}) = args{k+1};
   endfor
 endfunction
+
+%!test
+%! d = struct ("size", 3, "name", "a");
+%! o = __lafortune_parse_opts__ ({"SIZE", 5}, "f", d);
+%! assert (o.size, 5);
+%! assert (o.name, "a");
+%! assert (isequal (__lafortune_parse_opts__ ({}, "f", d), d));
+%!error <f: unknown option 'colour'; valid options: size, name> __lafortune_parse_opts__ ({"colour", 1}, "f", struct ("size", 3, "name", "a"))
+%!error <f: options must be NAME, VALUE pairs> __lafortune_parse_opts__ ({"size"}, "f", struct ("size", 3))
+%!error <f: option names must be strings> __lafortune_parse_opts__ ({3, 1}, "f", struct ("size", 3))
