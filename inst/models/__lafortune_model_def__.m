@@ -17,7 +17,13 @@
 ## the number of lobes, and the row names of the lobe fields) and
 ## @code{shader} (BRDF Explorer's head, lobe function, geometry, the lobe
 ## function's geometry arguments, the sliders' name format and their
-## ranges [lo, hi, cap] per lobe field).  A physically based
+## ranges [lo, hi, cap] per lobe field), and for the one fit driver
+## (fit_driver) @code{coords} (the fit's coordinates, a function of a verb:
+## fit_lafortune, fit_phys), @code{blank} (the lobe fields of a lobe not
+## fitted) and @code{grow} (the fit's policy: @code{below}, samples below
+## the horizon enter the fit; @code{screen}, starts are screened on a coarse
+## grid; @code{first}, the first accepted start ends a lobe's search, else
+## the best of all is kept; @code{albedo}, the fit reports it).  A physically based
 ## type (@code{def.lobe}: [g, dg] = lobe (X, q), of unit amplitude) also
 ## has @code{shape} (its shape parameters' names), @code{lo}, @code{hi}
 ## (bounds of [ks, shape]), @code{scale} ("log" or "lin" per shape
@@ -60,6 +66,12 @@ function def = physical (def)
   def.reduce = "(cos theta_i, cos theta_o, wi.wo)";
   def.lobe = str2func (["brdf_" type]);
   def.coords = @fit_phys;
+  ## a lobe not fitted (ks 0, the shape at its lower bounds), and the fit's
+  ## policy (fit_driver, fit_grow): samples on or below the horizon, where
+  ## every such model is 0, are left out; every start of a lobe is run and
+  ## the best kept; the albedo is reported
+  def.blank = [0, def.lo(2:end)];
+  def.grow = struct ("below", false, "screen", false, "first", false, "albedo", true);
   def.tag = "brdf-model";
   pc = @(s) strrep (s, "%", "%%");        # text put into a format
   def.table = struct ("head", [sprintf("# %s model (type %s): ", pc (def.title), type) ...

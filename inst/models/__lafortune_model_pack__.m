@@ -5,8 +5,10 @@
 ## @deftypefnx {} {@var{model} =} __lafortune_model_pack__ (@var{P}, @var{def})
 ## Channel @var{c} of a model struct as the parameter vector of
 ## @code{model_core} ([rho_d; ks_1; q_1; ...], lobe after lobe), or the
-## model struct of the columns of @var{P} (one per channel R, G, B).  The
-## one place the layout is written.
+## model struct of the columns of @var{P} (one per channel R, G, B; a
+## physically based type's with its field @code{type}, a Lafortune model's
+## without, as Lafortune models have always been).  The one place the
+## layout is written.
 ## @end deftypefn
 
 function out = __lafortune_model_pack__ (in, def, c)
@@ -22,7 +24,10 @@ function out = __lafortune_model_pack__ (in, def, c)
   endif
   P = in;
   nl = (rows (P) - 1) / m;
-  out = struct ("type", def.type, "rho_d", P(1,:));
+  out = struct ("rho_d", P(1,:));
+  if (! isempty (def.lobe))              # a physically based type: typed
+    out = struct ("type", def.type, "rho_d", P(1,:));
+  endif
   for j = 1:m
     out.(f{j+1}) = P(1 + j + m * (0:nl-1), :);
   endfor

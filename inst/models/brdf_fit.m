@@ -129,7 +129,9 @@ function [model, info, models] = brdf_fit (S, type, nlobes, varargin)
   opt = check_opts (opt, fname);
   [S, wt, n0] = fit_table (S, opt.weight, fname);
   pkg_load_optim ();
-  [models, info] = fit_model (S, wt, n0, def, nlobes, opt);
+  opt.bounds = true;                    # (leasqr's options: fit_lm)
+  opt.jacobian = "analytic";
+  [models, info] = fit_driver (S, wt, n0, def, nlobes, opt, fname);
   [model, models] = fit_table (S, models{nlobes}, models);   # the table's name
 endfunction
 

@@ -246,7 +246,10 @@ function [model, info, models] = lafortune_fit (S, nlobes, varargin)
   [S, wt, n0] = fit_table (S, opt.weight, "lafortune_fit");
   pkg_load_optim ();
 
-  [model, models, info] = fit_lafortune (S, wt, n0, nlobes, opt);
+  opt.energy = false;
+  [models, info] = fit_driver (S, wt, n0, __lafortune_model_def__ ("lafortune"), nlobes, opt,
+                               "lafortune_fit");
+  model = models{end};
   [model, models] = fit_table (S, model, models);   # the table's name
 endfunction
 

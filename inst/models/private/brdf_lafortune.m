@@ -4,31 +4,23 @@
 ## @deftypefn {} {@var{def} =} brdf_lafortune ()
 ## The isotropic Lafortune model's type definition, as @code{brdf_TYPE}
 ## gives the others' (see @code{model_def}): its fields, formula, the
-## bounds of its lobe fields, the reduction its fit merges samples by, the
-## fit's coordinates, and its files' layout (the JSON format tag, the text
-## table's row names, BRDF Explorer's sliders, lobe function and geometry).
-## Its value and Jacobian are @code{lafortune_core}'s (so @code{lobe} is
-## empty: the lobe has no unit amplitude to factor out); its fit is
-## @code{fit_lafortune}.
+## bounds of its lobe fields, the lobe fields of a lobe not fitted
+## (@code{blank}), the reduction its fit merges samples by, the fit's
+## coordinates and policy, and its files' layout (the JSON format tag, the
+## text table's row names, BRDF Explorer's sliders, lobe function and
+## geometry).  Its value and Jacobian are @code{lafortune_core}'s (so
+## @code{lobe} is empty: the lobe has no unit amplitude to factor out).
 ## f = rho_d/pi + sum_k max (Cxy_k (ux vx + uy vy) + Cz_k uz vz, 0)^e_k.
 ##
-## @code{coords} is the fit's coordinates, as @code{fit_phys} is the
-## physically based types': @code{coords ("eval", @var{D}, @var{p})} the
-## values (and Jacobian) at the groups (a, c) = @code{D.x} of one channel's
-## parameters [rho_d; Cxy; Cz; e; ...] (lafortune_core), or with
-## @code{D.nch} > 1 of lobes shared across the channels
-## (@code{shared_lobes}, the shared-colour parameters); @code{coords
-## ("bounds", @var{D}, @var{np})} their bounds: rho_d >= 0 and each lobe
-## field within @code{lo} and @code{hi} (the exponent in [0, 1e7]);
-## @code{coords ("x", [], @var{S})} what the model sees of each pair of the
-## table @var{S}, (a, c) = (ux vx + uy vy, uz vz): the fit merges samples
-## equal in it; @code{coords ("unscale", @var{D}, @var{p}, @var{s})}
-## parameters fitted to data divided by @var{s} in the data's units: rho_d
-## times @var{s}, each lobe's Cxy and Cz times @var{s}^(1/e) (a lobe with e
-## = 0, a step, cannot be scaled and stays), so that the model is @var{s}
-## times the fitted one; shared lobes (@code{D.nch} > 1) by
-## @code{shared_lobes}.  @code{starts} holds the candidate lobes the fit
-## grows from (fit_starts): direction families and exponents.
+## @code{coords} is the fit's coordinates (@code{fit_lafortune}, as
+## @code{fit_phys} is the physically based types'): values and Jacobian,
+## bounds, the (a, c) grouping, the acceptance set and guard, starts, and
+## the parameters in the data's units.  @code{starts} holds the candidate
+## lobes the fit grows from (fit_starts): direction families and exponents.
+## @code{grow} is the fit's policy (fit_driver, fit_grow): samples below
+## the horizon enter the fit (the lobe is defined there), the first
+## @code{tries} starts are screened on a coarse grid and the first accepted
+## start ends a lobe's search, and no albedo is reported.
 ## @end deftypefn
 
 function def = brdf_lafortune ()
@@ -45,7 +37,10 @@ function def = brdf_lafortune ()
   ## exponents 1 to 1e5, two per decade
   def.starts = struct ("dirs", [-1 1; -1 0.7; -1 1.3; -1 0.4; -1 0.2; -1 2; 1 1; 0 1],
                        "expo", 10 .^ (0:0.5:5));
-  def.coords = @coords;
+  ## a lobe not fitted (Cxy, Cz, e), and the fit's coordinates and policy
+  def.blank = [0 0 1];
+  def.coords = @fit_lafortune;
+  def.grow = struct ("below", true, "screen", true, "first", true, "albedo", false);
   def.tag = "lafortune-model";
   ## the text table: the paper's names of the lobe parameters
   def.table = struct ("head", ["# Lafortune model: %s, %d lobe(s), one column per channel\n" ...
@@ -66,48 +61,4 @@ function def = brdf_lafortune ()
                                     "    float sz = ln * vn;\n"],
                        "args", {{"sxy", "sz"}}, "name", "%s%d_%s",
                        "slider", [-2 2 NaN; -2 2 NaN; 0 100 NaN]);
-endfunction
-
-## the fit's coordinates (see above)
-function varargout = coords (what, D, arg, s)
-  switch (what)
-    case "x"
-      S = arg;
-      varargout = {[S.wi(:,1) .* S.wo(:,1) + S.wi(:,2) .* S.wo(:,2), S.wi(:,3) .* S.wo(:,3)]};
-    case "unscale"
-      if (isempty (D) || D.nch == 1)
-        varargout = {unscale(arg, s)};
-      else
-        varargout = {shared_lobes("unscale", arg, s, D.ref, D.nch)};
-      endif
-    case "eval"
-      if (D.nch == 1)
-        [varargout{1:max (nargout, 1)}] = __lafortune_lafortune_core__ (arg, D.x(:,1), D.x(:,2));
-      else
-        [varargout{1:max (nargout, 1)}] = shared_lobes ("eval", arg, D.ref, D.nch, D.x(:,1), D.x(:,2));
-      endif
-    case "bounds"
-      if (D.nch == 1)
-        nl = (arg - 1) / 3;
-        def = D.def;
-        varargout = {[0; repmat(def.lo(:), nl, 1)], [Inf; repmat(def.hi(:), nl, 1)]};
-      else
-        [varargout{1:2}] = shared_lobes ("bounds", arg, D.nch);
-      endif
-  endswitch
-endfunction
-
-## one channel's parameters P fitted to data divided by S, in the data's units
-function p = unscale (p, s)
-  if (s == 1)
-    return;
-  endif
-  p(1) *= s;
-  for k = 1:(numel (p) - 1) / 3
-    e = p(3*k+1);
-    f = exp (log (s) / e);
-    if (e > 0 && isfinite (f) && f > 0)
-      p(3*k-1:3*k) *= f;
-    endif
-  endfor
 endfunction

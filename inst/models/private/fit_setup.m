@@ -3,7 +3,7 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{F} =} fit_setup (@var{S}, @var{n0}, @var{keep}, @var{opt}, @var{fname})
 ## The metrics and scaled data of a fit (private), for both engines
-## (fit_lafortune, fit_model).  @var{S} is the checked table with a scene
+## (fit_driver, for every type).  @var{S} is the checked table with a scene
 ## table's prior after row @var{n0}, @var{keep} the rows the fit sees.
 ## @var{F} has:
 ## @table @code

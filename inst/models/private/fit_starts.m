@@ -16,7 +16,7 @@
 ## With @var{refine} true, the best start is then refined the same way on a
 ## finer grid around it: 9 directions within 0.35 rad of its own and 9
 ## exponents within half a decade, 8 per decade.  A start that no warm-up
-## run brings closer (fit_channel) needs that: the first lobe's
+## run brings closer (fit_grow) needs that: the first lobe's
 ## Levenberg-Marquardt run then takes fewer iterations to the same minimum
 ## (README, "Measurements behind the design").
 ## @end deftypefn
