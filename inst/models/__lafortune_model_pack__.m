@@ -24,8 +24,9 @@ function out = __lafortune_model_pack__ (in, def, c)
   endif
   P = in;
   nl = (rows (P) - 1) / m;
-  out = struct ("rho_d", P(1,:));
-  if (! isempty (def.lobe))              # a physically based type: typed
+  if (isempty (def.lobe))                # Lafortune: no type field
+    out = struct ("rho_d", P(1,:));
+  else
     out = struct ("type", def.type, "rho_d", P(1,:));
   endif
   for j = 1:m

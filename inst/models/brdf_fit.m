@@ -131,6 +131,8 @@ function [model, info, models] = brdf_fit (S, type, nlobes, varargin)
   pkg_load_optim ();
   opt.bounds = true;                    # (leasqr's options: fit_lm)
   opt.jacobian = "analytic";
+  opt.start = [];                       # always a growing fit
+  opt.init = "grow";
   [models, info] = fit_driver (S, wt, n0, def, nlobes, opt, fname);
   [model, models] = fit_table (S, models{nlobes}, models);   # the table's name
 endfunction

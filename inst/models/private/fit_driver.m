@@ -40,7 +40,7 @@ function [models, info] = fit_driver (S, wt, n0, def, nlobes, opt, fname)
   x = def.coords ("x", [], Sf);
   ## the coarse grid for starts and the acceptance set are for a growing
   ## fit only (from a given start, one run)
-  grow = ! (isfield (opt, "start") && (! isempty (opt.start) || ! strcmp (opt.init, "grow")));
+  grow = strcmp (opt.init, "grow") && isempty (opt.start);
   [j, xc, how, xr, jg, jrep] = def.coords ("groups", [], x, wt(keep), opt, grow);
   G = [];
   if (grow)

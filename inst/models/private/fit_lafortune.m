@@ -77,13 +77,22 @@ function varargout = fit_lafortune (what, D, varargin)
       varargout = {[0; 0; 1; zeros(D.nch - 1, 1)]};
     case "params"
       [p, s] = varargin{:};
-      if (D.nch == 1)
-        varargout = {unscale(p, s(1))};
-      else
-        varargout = {cell2mat(shared_lobes ("split", shared_lobes ("unscale", p, s(1), D.ref, D.nch),
-                                            D.ref, D.nch))};
+      p = rescale (D, p, s(1));
+      if (D.nch > 1)
+        p = cell2mat (shared_lobes ("split", p, D.ref, D.nch));
       endif
+      varargout = {p};
   endswitch
+endfunction
+
+## parameters P fitted to data divided by S in the data's units: one
+## channel's (unscale), or shared lobes' (shared_lobes)
+function p = rescale (D, p, s)
+  if (D.nch == 1)
+    p = unscale (p, s);
+  else
+    p = shared_lobes ("unscale", p, s, D.ref, D.nch);
+  endif
 endfunction
 
 ## one channel's parameters P fitted to data divided by S, in the data's units
@@ -123,19 +132,16 @@ function p0 = start (D, opt, B, s, nlobes)
   if (! isempty (opt.start))
     P = arrayfun (@(c) __lafortune_model_pack__ (opt.start, D.def, c), B, "uniformoutput", false);
     if (nch == 1)
-      p0 = unscale (P{1}, 1 / s(1));
+      p0 = P{1};
     else
-      p0 = shared_lobes ("unscale", shared_lobes ("join", P, D.ref), 1 / s(1), D.ref, nch);
+      p0 = shared_lobes ("join", P, D.ref);
     endif
+    p0 = rescale (D, p0, 1 / s(1));
   elseif (strcmp (opt.init, "plain"))
     lobe = [-1; 1; 0; ones(nch - 1, 1)];
     p0 = [0.1 * ones(nch, 1); repmat(lobe, nlobes, 1)];
     p0(nch+3:2+nch:end) = 10 * (1:nlobes);
-    if (nch == 1)
-      p0 = unscale (p0, 1 / s(1));
-    else
-      p0 = shared_lobes ("unscale", p0, 1 / s(1), D.ref, nch);
-    endif
+    p0 = rescale (D, p0, 1 / s(1));
   endif
 endfunction
 
