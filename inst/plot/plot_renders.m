@@ -296,6 +296,15 @@ endfunction
 %! assert (nnz (any (img != 255, 3)) > 0.3 * rows (img) * columns (img));
 
 %!test
+%! ## a title too long for the figure is set smaller, all of it in the picture
+%! t = repmat ("a long title, ", 1, 12);
+%! hf = plot_renders ({ref, a}, {"measured", "fit a"}, 20, "title", t);
+%! ht = findobj (hf, "type", "text", "string", t);
+%! fs = get (ht, "fontsize");
+%! close (hf);
+%! assert (fs < 12 && fs >= 6);
+
+%!test
 %! ## tall images (the Happy Buddha's 256 wide x 512 high) keep their aspect
 %! [hf, hax] = plot_renders ({zeros(512, 256, 3) + 0.1, zeros(512, 256, 3) + 0.2}, {"m", "f"}, 6.02);
 %! p = get (hax(1), "position") .* [get(hf, "position")(3:4) get(hf, "position")(3:4)];
