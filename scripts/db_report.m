@@ -25,7 +25,9 @@
 ## material whose file could not be read or processed gets one row with
 ## status @code{error} and the message.
 ## @item report.md
-## the summary across materials (in-sample median PSNR, FLIP, ΔE and hue,
+## the template scripts/templates/report_database.md (report_fill) filled
+## from the summary (db_summary, put in rows and words by db_view): the
+## summary across materials (in-sample median PSNR, FLIP, ΔE and hue,
 ## worst and best PSNR and worst FLIP, and the held-out median FLIP and
 ## ΔE, per method and lobe count), the published baseline, the pairs of
 ## fits that PSNR and FLIP rank differently, and the verdicts, all on the
@@ -42,11 +44,32 @@
 ## @item gallery/index.html
 ## the contact sheets of all materials, in-sample and held out.
 ## @item summary.json
-## the same numbers for machines.
+## the summary: every number report.md gives, for machines.
 ## @end table
 ## @end deftypefn
 function db_report ()
   c = repro_config ();
+  D = read_records (c);
+  [sm, X] = db_summary (c, D);
+  write_table (c, D, X);
+  ## the plots: PSNR (in-sample) and FLIP (the verdicts') against lobe
+  ## count, every material
+  held = ! isempty (c.judge);
+  plot_lobes_db (X.psnr.pov, c, c.materials, "in-sample PSNR against the measured render (dB), POV-Ray", [],
+                 [], repro_files ("fig_psnr_lobes", c.results, ""));
+  plot_lobes_db (X.flip.verdict, c, c.materials, ifelse (held, "held-out FLIP, mean over JUDGE's lights (lower is better)",
+                                                          "in-sample FLIP, POV-Ray (lower is better)"), [0 1],
+                 c.fail_flip, repro_files ("fig_flip_lobes", c.results, ""));
+  repro_save (repro_files ("report", c.results, ""), report_fill ("report_database", db_view (sm)));
+  repro_save (repro_files ("summary", c.results, ""), sm);
+  write_gallery (c, D, X.psnr.pov, X.flip.pov, X.deltae.pov, X.flip.heldout);
+  printf ("database: %d materials (%d failed): %s\n", numel (c.materials), numel (sm.failed),
+          repro_files ("report", c.results, ""));
+endfunction
+
+## every material's records (one per step of the database), whether all of
+## its steps went well, and the first step's error where one did not
+function D = read_records (c)
   mats = c.materials;
   S = repro_files ().steps;
   steps = {S([S.database]).name};
@@ -72,59 +95,14 @@ function db_report ()
       endif
     endfor
   endfor
-  ok = find ([D.ok]);
-  nm = numel (c.methods);
-  nk = numel (c.lobes);
-  ## every measure (materials x lobes) per method and renderer: X.flip.pov.scene,
-  ## X.deltae.rt.inplane, ...; P and Q are PSNR with POV-Ray and rt_render
-  X = struct ();
-  for q = {"psnr", "flip", "deltae", "hue"}
-    for r = {"pov", "rt"}
-      for m = [c.methods, {"ngan2005"}]   # and the published fit, where there is one
-        X.(q{1}).(r{1}).(m{1}) = nan (numel (mats), nk);
-        for i = ok
-          if (isfield (D(i).rec.render_fits, m{1}))
-            X.(q{1}).(r{1}).(m{1})(i,:) = repro_row (D(i).rec.render_fits.(m{1}), [q{1} "_" r{1}], nk);
-          endif
-        endfor
-      endfor
-    endfor
-  endfor
-  ## held out: the means over JUDGE's lights (repro_judge, rt_render), which
-  ## no fit was made for; every verdict is made on them ("verdict"), and on
-  ## the in-sample POV-Ray renders only without held-out lights
-  nj = numel (c.judge);
-  for q = {"psnr", "flip", "deltae", "hue"}
-    for m = [c.methods, {"ngan2005"}]
-      X.(q{1}).heldout.(m{1}) = nan (numel (mats), nk);
-      X.(q{1}).light.(m{1}) = nan (numel (mats), nk, nj);
-      for i = ok
-        if (isfield (D(i).rec.judge, m{1}))
-          r = D(i).rec.judge.(m{1});
-          n = min (numel (r), nk);
-          X.(q{1}).heldout.(m{1})(i,1:n) = repro_row (r, [q{1} "_mean"], n);
-          for l = 1:nj
-            X.(q{1}).light.(m{1})(i,1:n,l) = arrayfun (@(x) x.(q{1})(l), r(1:n));
-          endfor
-        endif
-      endfor
-    endfor
-    X.(q{1}).verdict = X.(q{1}).(ifelse (nj > 0, "heldout", "pov"));
-  endfor
-  if (nj > 0)
-    X.verdict = sprintf ("held-out FLIP (the mean over %s, rt_render; no fit was made for these lights)",
-                         strjoin ({c.judge.label}, ", "));
-  else
-    X.verdict = "in-sample FLIP (POV-Ray renders in the light the scene fits were made for: JUDGE is empty)";
-  endif
-  P = X.psnr.pov;
-  Q = X.psnr.rt;
-  F = X.flip.pov;
-  Frt = X.flip.rt;
-  V = X.flip.verdict;                    # the verdicts' measure
-  Vp = X.psnr.verdict;
+endfunction
 
-  ## --- table.csv
+## table.csv: one row per material, method and lobe count, and one per
+## published fit; one row with the error for a material that failed
+function write_table (c, D, X)
+  mats = c.materials;
+  nk = numel (c.lobes);
+  nj = numel (c.judge);
   ## the methods' models, the tables their errors are on (the methods
   ## without their models), the lobe fields of every model type fitted
   mp = cellfun (@repro_method, c.methods);
@@ -196,336 +174,6 @@ function db_report ()
     endif
   endfor
   repro_save (repro_files ("table", c.results, ""), [strjoin(rows, "\n") "\n"]);
-
-  ## --- the plots: PSNR (in-sample) and FLIP (the verdicts') against lobe
-  ## count, every material
-  plot_lobes_db (P, c, mats, "in-sample PSNR against the measured render (dB), POV-Ray", [],
-                 [], repro_files ("fig_psnr_lobes", c.results, ""));
-  plot_lobes_db (V, c, mats, ifelse (nj > 0, "held-out FLIP, mean over JUDGE's lights (lower is better)",
-                                     "in-sample FLIP, POV-Ray (lower is better)"), [0 1],
-                 c.fail_flip, repro_files ("fig_flip_lobes", c.results, ""));
-
-  ## --- report.md
-  L = {"# lafortune: the Lafortune model over a database of measured BRDFs", ""};
-  scene = repro_scene (c);
-  L{end+1} = sprintf (["%d materials from `%s` (%d processed, %d failed). Scene `%s`, %d x %d pixels " ...
-                       "(W x H), %d samples per pixel for the measured data (rt_render); fits rendered with " ...
-                       "POV-Ray (anti-aliasing %d); fits of %s lobes, grazing angles beyond %d degrees left " ...
-                       "out; %s, Octave %s."], numel (mats), c.merl_dir, numel (ok), numel (mats) - numel (ok),
-                      scene.name, scene.width, scene.height, scene.spp, c.pov_aa, mat2str (c.lobes),
-                      c.max_angle, datestr (now (), "yyyy-mm-dd HH:MM"), OCTAVE_VERSION);
-  L{end+1} = "";
-  L{end+1} = ["Each fit's render is compared with the measured-data render (`img_compare`): " ...
-              "PSNR, 10 log10 (peak^2 / MSE), peak = the measured render's maximum (dominated by the " ...
-              "specular highlight; higher is better); FLIP, HDR-FLIP (Andersson et al. 2021), the mean " ...
-              "per-pixel error over the object's pixels, 0 (same) to 1, as a viewer flipping between the " ...
-              "two pictures sees them (lower is better); ΔE, the mean CIEDE2000 difference of the " ...
-              "displayed pictures over the object's pixels (about 1: just noticeable; lower is better); " ...
-              "hue, the chroma-weighted mean hue-angle difference in degrees (a body or highlight of the " ...
-              "wrong colour; lower is better). Everything per row is in `table.csv`; the contact sheets " ...
-              "are in `gallery/index.html`."];
-  L{end+1} = "";
-  L{end+1} = "## Summary across materials";
-  L{end+1} = "";
-  ag = [];
-  for i = ok
-    for m = c.methods
-      ag = [ag, [D(i).rec.render_fits.(m{1}).renderers_psnr]];
-    endfor
-  endfor
-  if (isempty (ag))
-    ag = NaN;
-  endif
-  L{end+1} = sprintf (["Measures of the POV-Ray renders (the fits' renderer, as the paper used one) and, in the " ...
-                       "column rt_render, of the Octave raytracer's, which evaluates each model per sample (each " ...
-                       "against the measured data rendered by the same renderer). The two renderers agree on the " ...
-                       "same model to %.1f dB at worst, %.1f dB in the median over the %d fits."],
-                      min (ag), median (ag), numel (ag));
-  L{end+1} = "";
-  L{end+1} = ["| method | lobes | in-sample: median PSNR (dB) | median FLIP | median ΔE | median hue (°) | " ...
-              "worst PSNR (dB) | worst material | best PSNR (dB) | worst FLIP | worst material (FLIP) | " ...
-              "rt_render: median PSNR (dB), FLIP, ΔE, hue (°) | median cosine-weighted rmse | " ...
-              "**held out**: median FLIP, ΔE |"];
-  L{end+1} = "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|";
-  sm = struct ("materials", {mats}, "processed", numel (ok), "failed", {{}}, "methods", struct ());
-  for m = c.methods
-    for j = 1:nk
-      x = P.(m{1})(ok,j);
-      med = @(q, r) median (X.(q).(r).(m{1})(ok,j));
-      cr = arrayfun (@(i) mean (D(i).rec.fit.(m{1}).errors.(repro_method (m{1}).base).cos_rmse(c.lobes(j),:)), ok);
-      if (isempty (x))
-        L{end+1} = sprintf ("| %s | %d |%s", repro_method (m{1}).label, c.lobes(j), repmat (" - |", 1, 12));
-        continue;
-      endif
-      [w, iw] = min (x);
-      [wf, iwf] = max (F.(m{1})(ok,j));
-      L{end+1} = sprintf (["| %s | %d | %.2f | %.3f | %.2f | %.1f | %.2f | %s | %.2f | %.3f | %s | " ...
-                           "%.2f, %.3f, %.2f, %.1f | %.4g | %.3f, %.2f |"], repro_method (m{1}).label, c.lobes(j),
-                          median (x), med ("flip", "pov"), med ("deltae", "pov"), med ("hue", "pov"),
-                          w, mats{ok(iw)}, max (x), wf, mats{ok(iwf)},
-                          med ("psnr", "rt"), med ("flip", "rt"), med ("deltae", "rt"), med ("hue", "rt"),
-                          median (cr), med ("flip", "heldout"), med ("deltae", "heldout"));
-      for q = {"psnr", "flip", "deltae", "hue"}
-        sm.methods.(m{1}).(["median_" q{1}])(j) = med (q{1}, "pov");
-        sm.methods.(m{1}).(["median_" q{1} "_rt"])(j) = med (q{1}, "rt");
-        sm.methods.(m{1}).(["median_" q{1} "_heldout"])(j) = med (q{1}, "heldout");
-      endfor
-      sm.methods.(m{1}).worst_psnr(j) = w;
-      sm.methods.(m{1}).worst_material{j} = mats{ok(iw)};
-      sm.methods.(m{1}).worst_flip(j) = wf;
-      sm.methods.(m{1}).worst_flip_material{j} = mats{ok(iwf)};
-    endfor
-  endfor
-  L{end+1} = "";
-  L{end+1} = sprintf ("![PSNR against lobe count, every material](%s)", repro_files ("fig_psnr_lobes", "", ""));
-  L{end+1} = "";
-  L{end+1} = sprintf ("![%s against lobe count, every material (dashed: FAIL_FLIP = %g)](%s)",
-                      ifelse (nj > 0, "held-out FLIP", "in-sample FLIP"), c.fail_flip,
-                      repro_files ("fig_flip_lobes", "", ""));
-  L{end+1} = "";
-
-  ## --- the published fit: Ngan et al.'s 1-lobe fits against the toolbox's
-  [L, sm.published] = published_section (L, D, ok, mats, X, c);
-
-  ## --- where PSNR and FLIP disagree
-  L{end+1} = "## PSNR and FLIP";
-  L{end+1} = "";
-  [L, sm.rank_disagreement] = disagreement (L, P, F, Q, Frt, ok, mats, c, c.fail_flip_drop);
-  rec = "general";                    # the recommended method
-  if (any (strcmp (c.methods, rec)))
-    [up, rise] = falls_of (V.(rec), ok, c.fail_flip_drop);
-    [up_p, rise_p] = falls_of (F.(rec), ok, c.fail_flip_drop);
-    L{end+1} = sprintf (["The recommended fit (%s) renders worse with one more lobe (up by more than %g, " ...
-                         "FAIL_FLIP_DROP) by %s on: %s. By in-sample FLIP (POV-Ray, the scene's own light): %s."],
-                        rec, c.fail_flip_drop, X.verdict, names_rise (mats, up, V.(rec), Vp.(rec), c.lobes, c.fail_flip_drop),
-                        names_rise (mats, up_p, F.(rec), P.(rec), c.lobes, c.fail_flip_drop));
-    sm.flip_rises = struct ("method", rec, "verdict", {mats(up)}, "largest_rise", max ([rise; 0]),
-                            "in_sample", {mats(up_p)});
-  else
-    L{end+1} = sprintf ("The recommended fit (%s) is not among METHODS (%s).", rec, strjoin (c.methods, " "));
-    sm.flip_rises = struct ("method", rec, "verdict", {{}}, "largest_rise", NaN, "in_sample", {{}});
-  endif
-  L{end+1} = "";
-
-  ## --- where the Lafortune model fails: by FLIP, PSNR beside it
-  L{end+1} = "## Where the Lafortune model fails";
-  L{end+1} = "";
-  L{end+1} = sprintf (["Judged by %s. A material fails when its best fit (the lowest FLIP, over the " ...
-                       "Lafortune model's methods and lobe counts) has FLIP above %g (FAIL_FLIP: the picture looks wrong), or when " ...
-                       "the method of that best fit looks wrong with %d lobe%s (FLIP above %g) and going to %d " ...
-                       "lobes lowers its FLIP by less than %g (FAIL_FLIP_GAIN: more lobes do not help, as the " ...
-                       "paper found by PSNR for red plastic; a material that %d lobe%s already render%s right " ...
-                       "does not fail for that). A method falls on a material when one more lobe raises FLIP by " ...
-                       "more than %g (FAIL_FLIP_DROP; as the paper's 3-lobe fits did by PSNR)."],
-                      X.verdict, c.fail_flip, min (c.lobes), plural (min (c.lobes)), c.fail_flip, max (c.lobes),
-                      c.fail_flip_gain, min (c.lobes), plural (min (c.lobes)),
-                      ifelse (min (c.lobes) == 1, "s", ""), c.fail_flip_drop);
-  L{end+1} = "";
-  fails = {};
-  lm = c.methods(strcmp ({mp.model}, "lafortune"));      # the Lafortune model's methods
-  for i = ifelse (isempty (lm), [], ok)
-    fb = cellfun (@(m) min (V.(m)(i,:)), lm);
-    [best, b] = min (fb);
-    if (! isfinite (best))
-      continue;
-    endif
-    mb = lm{b};
-    [~, jb] = min (V.(mb)(i,:));
-    gain = V.(mb)(i,1) - V.(mb)(i,end);
-    why = {};
-    if (best > c.fail_flip)
-      why{end+1} = sprintf ("FLIP above %g", c.fail_flip);
-    endif
-    if (nk > 1 && V.(mb)(i,1) > c.fail_flip && ! (gain >= c.fail_flip_gain))
-      why{end+1} = sprintf ("more lobes do not help (FLIP down by less than %g)", c.fail_flip_gain);
-    endif
-    if (isempty (why))
-      continue;
-    endif
-    fails{end+1} = struct ("material", mats{i}, "reason", strjoin (why, "; "), "method", mb,
-                           "lobes", c.lobes(jb), "flip", best, "flip_in_sample", F.(mb)(i,jb),
-                           "psnr", Vp.(mb)(i,jb), "best_psnr", max (cellfun (@(m) max (Vp.(m)(i,:)), lm)),
-                           "flip_first", V.(mb)(i,1), "flip_last", V.(mb)(i,end),
-                           "psnr_first", Vp.(mb)(i,1), "psnr_last", Vp.(mb)(i,end));
-  endfor
-  if (isempty (lm))
-    L{end+1} = sprintf ("The Lafortune model is not among MODELS (%s).", strjoin (c.models, " "));
-  elseif (isempty (fails))
-    L{end+1} = sprintf ("No material fails (%d processed).", numel (ok));
-  else
-    L{end+1} = sprintf ("%d of the %d processed materials fail:", numel (fails), numel (ok));
-    L{end+1} = "";
-    L{end+1} = sprintf (["| material | why | best fit | its FLIP (in-sample, POV-Ray) | its PSNR (dB) | " ...
-                         "FLIP, %d to %d lobes | PSNR, %d to %d lobes (dB) | best PSNR, any fit (dB) |"],
-                        min (c.lobes), max (c.lobes), min (c.lobes), max (c.lobes));
-    L{end+1} = "|---|---|---|---|---|---|---|---|";
-    for f = fails
-      x = f{1};
-      L{end+1} = sprintf ("| %s | %s | %s, %d lobe%s | %.3f (%.3f) | %.2f | %.3f → %.3f | %.2f → %.2f | %.2f |",
-                          x.material, x.reason, x.method, x.lobes, plural (x.lobes), x.flip, x.flip_in_sample,
-                          x.psnr, x.flip_first, x.flip_last, x.psnr_first, x.psnr_last, x.best_psnr);
-    endfor
-  endif
-  sm.fails = fails;
-  L{end+1} = "";
-  L{end+1} = "Per method:";
-  L{end+1} = "";
-  for m = c.methods
-    best = min (V.(m{1})(ok,:), [], 2);
-    gain = V.(m{1})(ok,1) - V.(m{1})(ok,end);
-    high = ok(best > c.fail_flip);
-    flat = ok(! (gain >= c.fail_flip_gain) & nk > 1);
-    [falls, rise] = falls_of (V.(m{1}), ok, c.fail_flip_drop);
-    [falls_rt, rise_rt] = falls_of (F.(m{1}), ok, c.fail_flip_drop);
-    L{end+1} = sprintf (["- %s: best FLIP above %g: %s; more lobes do not help (FLIP down by less than %g): " ...
-                         "%s; more lobes render worse: %s (in-sample, POV-Ray: %s)."],
-                        repro_method (m{1}).label, c.fail_flip,
-                        names_val (mats, high, min (V.(m{1})(high,:), [], 2), "FLIP %.3f"), c.fail_flip_gain,
-                        names_val (mats, flat, V.(m{1})(flat,end) - V.(m{1})(flat,1),
-                                   sprintf ("FLIP %%+.3f from %d to %d lobes", min (c.lobes), max (c.lobes))),
-                        names_rise (mats, falls, V.(m{1}), Vp.(m{1}), c.lobes, c.fail_flip_drop),
-                        names_rise (mats, falls_rt, F.(m{1}), P.(m{1}), c.lobes, c.fail_flip_drop));
-    sm.methods.(m{1}).fails_high = mats(high);
-    sm.methods.(m{1}).fails_flat = mats(flat);
-    sm.methods.(m{1}).falls = mats(falls);
-    sm.methods.(m{1}).largest_flip_rise = max ([rise; 0]);
-    sm.methods.(m{1}).falls_in_sample = mats(falls_rt);
-    sm.methods.(m{1}).largest_flip_rise_in_sample = max ([rise_rt; 0]);
-  endfor
-  bad = find (! [D.ok]);
-  L{end+1} = "";
-  if (isempty (bad))
-    L{end+1} = "Every file was read and processed.";
-  else
-    L{end+1} = "Files that could not be processed (one row each in `table.csv`):";
-    L{end+1} = "";
-    for i = bad
-      L{end+1} = sprintf ("- **%s**: %s", mats{i}, D(i).error);
-      sm.failed{end+1} = struct ("material", mats{i}, "error", D(i).error);
-    endfor
-  endif
-  L{end+1} = "";
-
-  ## --- the models compared (MODELS)
-  [L, sm.models] = db_models (L, c, D, ok, mats, X);      # on X.*.verdict
-
-  L{end+1} = "## Every material";
-  L{end+1} = "";
-  L{end+1} = sprintf (["One row per material and method; each cell gives the %s-lobe fits in turn, " ...
-                       "POV-Ray renders, then rt_render's."],
-                      strjoin (arrayfun (@num2str, c.lobes, "uniformoutput", false), ", "));
-  L{end+1} = "";
-  L{end+1} = ["| material | method | PSNR (dB) | FLIP | ΔE | hue (°) | rt_render PSNR (dB) | rt_render FLIP | " ...
-              "rt_render ΔE | rt_render hue (°) | contact sheet |"];
-  L{end+1} = "|---|---|---|---|---|---|---|---|---|---|---|";
-  fmt = struct ("psnr", "%.2f", "flip", "%.3f", "deltae", "%.2f", "hue", "%.1f");
-  for i = 1:numel (mats)
-    if (! D(i).ok)
-      L{end+1} = sprintf ("| %s | %s |", mats{i}, strjoin (repmat ({"failed"}, 1, 10), " | "));
-      continue;
-    endif
-    for m = c.methods
-      s = sprintf ("| %s | %s |", mats{i}, m{1});
-      for r = {"pov", "rt"}
-        for q = {"psnr", "flip", "deltae", "hue"}
-          s = [s " " lobes_txt(X.(q{1}).(r{1}).(m{1})(i,:), fmt.(q{1})) " |"];
-        endfor
-      endfor
-      L{end+1} = [s sprintf(" [sheet](%s/%s) |", repro_files ("db_material", "", mats{i}), D(i).rec.sheet.file)];
-    endfor
-  endfor
-  L{end+1} = "";
-  L{end+1} = "## Time per material by stage";
-  L{end+1} = "";
-  L{end+1} = "Seconds of each step (Octave start-up not included), over the processed materials.";
-  L{end+1} = "";
-  L{end+1} = "| stage | median (s) | max (s) | total (s) |";
-  L{end+1} = "|---|---|---|---|";
-  for s = steps
-    t = arrayfun (@(i) D(i).rec.(s{1}).time, ok);
-    if (isempty (t))
-      t = NaN;
-    endif
-    L{end+1} = sprintf ("| %s | %.1f | %.1f | %.1f |", s{1}, median (t), max (t), sum (t));
-    sm.stage_time.(s{1}) = t(:)';
-  endfor
-  L{end+1} = "";
-  repro_save (repro_files ("report", c.results, ""), strjoin (L, "\n"));
-  sm.psnr = P;
-  sm.psnr_rt = Q;
-  sm.flip = F;
-  sm.flip_rt = Frt;
-  sm.deltae = X.deltae.pov;
-  sm.deltae_rt = X.deltae.rt;
-  sm.hue = X.hue.pov;
-  sm.hue_rt = X.hue.rt;
-  sm.verdict = X.verdict;
-  sm.heldout = struct ("lights", {{c.judge.label}}, "flip", X.flip.heldout, "deltae", X.deltae.heldout,
-                       "psnr", X.psnr.heldout, "hue", X.hue.heldout);
-  sm.settings = struct ("scene", scene.name, "width", scene.width, "height", scene.height,
-                        "spp", scene.spp, "pov_antialias", c.pov_aa, "max_angle", c.max_angle,
-                        "lobes", c.lobes, "methods", {c.methods}, "models", {c.models},
-                        "metals", {c.metals}, "quick", c.quick,
-                        "fail_flip", c.fail_flip, "fail_flip_gain", c.fail_flip_gain,
-                        "fail_flip_drop", c.fail_flip_drop, "judge", {{c.judge.name}},
-                        "judge_samples", c.judge_samples, "judge_spp", c.judge_spp);
-  repro_save (repro_files ("summary", c.results, ""), sm);
-  write_gallery (c, D, P, F, X.deltae.pov, X.flip.heldout);
-  printf ("database: %d materials (%d failed): %s\n", numel (mats), numel (bad),
-          repro_files ("report", c.results, ""));
-endfunction
-
-## The baseline: the published 1-lobe fits (PUBLISHED, rendered by
-## repro_render_fits and judged by repro_judge as the method ngan2005)
-## against the recommended method's 1-lobe fit, on the verdicts' measure
-function [L, S] = published_section (L, D, ok, mats, X, c)
-  S = struct ("materials", {{}}, "flip", [], "psnr", [], "deltae", [], "hue", [], "flip_in_sample", [],
-              "recommended_flip", []);
-  has = ok(arrayfun (@(i) isfield (D(i).rec.render_fits, "ngan2005"), ok));
-  L{end+1} = "## The published fit";
-  L{end+1} = "";
-  if (isempty (has))
-    L{end+1} = sprintf (["No published fit was rendered (PUBLISHED = `%s`: the table is absent, or has none " ...
-                         "of these materials)."], c.published);
-    L{end+1} = "";
-    return;
-  endif
-  S.materials = mats(has);
-  for q = {"flip", "psnr", "deltae", "hue"}
-    S.(q{1}) = X.(q{1}).verdict.ngan2005(has,1)';
-  endfor
-  S.flip_in_sample = X.flip.pov.ngan2005(has,1)';
-  L{end+1} = sprintf (["Ngan, Durand and Matusik (2005) published 1-lobe Lafortune fits (direction and exponent " ...
-                       "shared by R, G, B) of %d of these materials (`%s`); each is rendered like the toolbox's " ...
-                       "fits (row `ngan2005` of `table.csv`). Theirs were fitted to the real measurements, the " ...
-                       "toolbox's to the very data they are compared with here. Judged by %s."], numel (has),
-                      c.published, X.verdict);
-  rec = "general";
-  j1 = find (c.lobes == 1, 1);
-  if (any (strcmp (c.methods, rec)) && ! isempty (j1))
-    S.recommended_flip = X.flip.verdict.(rec)(has,j1)';
-    win = S.recommended_flip < S.flip;
-    L{end+1} = "";
-    L{end+1} = sprintf (["The recommended 1-lobe fit (%s) is better than the published one on %d of %d " ...
-                         "materials%s. Medians: FLIP %.3f (published) against %.3f; PSNR %.2f dB against %.2f dB."],
-                        rec, sum (win), numel (has),
-                        ifelse (all (win), "", sprintf (" (not on: %s)", strjoin (mats(has(! win)), ", "))),
-                        median (S.flip), median (S.recommended_flip), median (S.psnr),
-                        median (X.psnr.verdict.(rec)(has,j1)));
-  endif
-  L{end+1} = "";
-  L{end+1} = "| material | published: PSNR (dB) | FLIP | ΔE | hue (°) | in-sample FLIP | recommended 1 lobe: PSNR (dB) | FLIP |";
-  L{end+1} = "|---|---|---|---|---|---|---|---|";
-  for n = 1:numel (has)
-    i = has(n);
-    sp = NaN; sf = NaN;
-    if (! isempty (S.recommended_flip))
-      sp = X.psnr.verdict.(rec)(i,j1); sf = S.recommended_flip(n);
-    endif
-    L{end+1} = sprintf ("| %s | %.2f | %.3f | %.2f | %.1f | %.3f | %.2f | %.3f |", mats{i}, S.psnr(n), S.flip(n),
-                        S.deltae(n), S.hue(n), S.flip_in_sample(n), sp, sf);
-  endfor
-  L{end+1} = "";
 endfunction
 
 ## the held-out cells of table.csv of method M's fit at lobe slot J of
@@ -560,137 +208,6 @@ function v = param_cells (md, k, pf, nl)
       endif
     endfor
   endfor
-endfunction
-
-## How many pairs of fits PSNR and FLIP rank differently (one says the first
-## is better, the other the second), within each material (all its fits) and
-## across materials (the same method and lobe count), and how many of them
-## by more than GAP of FLIP; appends the sentence to L
-function [L, S] = disagreement (L, P, F, Q, Frt, ok, mats, c, gap)
-  S = struct ();
-  ex = "";
-  nk = numel (c.lobes);
-  for r = {"pov", "rt"}
-    if (strcmp (r{1}, "pov"))
-      A = P;  B = F;
-    else
-      A = Q;  B = Frt;
-    endif
-    w = a = zeros (1, 3);          # pairs, ranked differently, ... by more than GAP of FLIP
-    best = [];
-    for i = ok
-      pa = cellfun (@(m) A.(m)(i,:), c.methods, "uniformoutput", false);
-      pb = cellfun (@(m) B.(m)(i,:), c.methods, "uniformoutput", false);
-      [n, e] = discordant ([pa{:}], [pb{:}], gap);
-      w += n;
-      ## the pair ranked differently with the largest FLIP difference (an example)
-      if (strcmp (r{1}, "pov") && ! isempty (e) && (isempty (best) || e(1) > best(1)))
-        best = [e i];
-      endif
-    endfor
-    for m = c.methods
-      for j = 1:nk
-        a += discordant (A.(m{1})(ok,j), B.(m{1})(ok,j), gap);
-      endfor
-    endfor
-    S.(r{1}) = struct ("within_pairs", w(1), "within_differ", w(2), "within_differ_gap", w(3),
-                       "across_pairs", a(1), "across_differ", a(2), "across_differ_gap", a(3));
-    if (! isempty (best))
-      i = best(4);
-      fit = @(q) sprintf ("%s %d", c.methods{ceil (q / nk)}, c.lobes(mod (q - 1, nk) + 1));
-      pv = @(X, q) X.(c.methods{ceil (q / nk)})(i, mod (q - 1, nk) + 1);
-      ex = sprintf ([" The widest such pair: on %s, PSNR prefers %s (%.2f dB, FLIP %.3f) to %s (%.2f dB, " ...
-                     "FLIP %.3f)."], mats{i}, fit (best(2)), pv (P, best(2)), pv (F, best(2)), fit (best(3)),
-                    pv (P, best(3)), pv (F, best(3)));
-    endif
-  endfor
-  pct = @(d, n) 100 * d / max (n, 1);
-  L{end+1} = sprintf (["PSNR and FLIP rank %d of %d pairs of fits of the same material differently (%.0f %%; " ...
-                       "%d with FLIP apart by more than %g), and %d of %d pairs of materials fitted by the same " ...
-                       "method with the same lobe count (%.0f %%; %d by more than %g): POV-Ray renders; with " ...
-                       "rt_render's, %d of %d and %d of %d. A pair is ranked differently when one measure " ...
-                       "finds the first fit better and the other the second (pairs that either finds equal " ...
-                       "agree).%s"],
-                      S.pov.within_differ, S.pov.within_pairs, pct (S.pov.within_differ, S.pov.within_pairs),
-                      S.pov.within_differ_gap, gap, S.pov.across_differ, S.pov.across_pairs,
-                      pct (S.pov.across_differ, S.pov.across_pairs), S.pov.across_differ_gap, gap,
-                      S.rt.within_differ, S.rt.within_pairs, S.rt.across_differ, S.rt.across_pairs, ex);
-  L{end+1} = "";
-endfunction
-
-## N = [pairs, ranked differently, ... with B apart by more than GAP]: pairs
-## of entries where both A (PSNR: higher is better) and B (FLIP: lower is
-## better) are finite, and those where A and B disagree; E = [FLIP gap,
-## first, second] of the pair ranked differently with the largest FLIP gap
-## (the first preferred by PSNR), empty when none
-function [N, e] = discordant (a, b, gap)
-  a = a(:);
-  b = b(:);
-  q = find (isfinite (a) & isfinite (b));
-  [i, j] = find (triu (true (numel (q)), 1));
-  i = q(i);
-  j = q(j);
-  da = a(i) - a(j);
-  db = b(i) - b(j);
-  bad = da .* db > 0;               # higher PSNR and higher FLIP
-  N = [numel(i), nnz(bad), nnz(bad & abs (db) > gap)];
-  e = [];
-  if (N(2) > 0)
-    [g, k] = max (abs (db) .* bad);
-    if (da(k) > 0)
-      e = [g, i(k), j(k)];
-    else
-      e = [g, j(k), i(k)];
-    endif
-  endif
-endfunction
-
-## The materials (indices into OK) whose FLIP X (materials x lobes) rises
-## by more than LIMIT with one more lobe, and every material's largest rise
-function [falls, rise] = falls_of (X, ok, limit)
-  rise = zeros (numel (ok), 1);
-  if (columns (X) > 1)
-    rise = max (diff (X(ok,:), 1, 2), [], 2);
-  endif
-  falls = ok(rise > limit);
-endfunction
-
-## the materials IDX with their FLIP rises by more than LIMIT, each step
-## "K1 → K2 lobes: FLIP +x (PSNR +y dB)"; FLIP F, PSNR P: materials x lobes
-function s = names_rise (mats, idx, F, P, lobes, limit)
-  if (isempty (idx))
-    s = "none";
-    return;
-  endif
-  t = {};
-  for i = idx(:)'
-    d = diff (F(i,:));
-    st = {};
-    for j = find (d > limit)
-      st{end+1} = sprintf ("%d → %d lobes: FLIP %+.3f, PSNR %+.2f dB", lobes(j), lobes(j+1), d(j),
-                           P(i,j+1) - P(i,j));
-    endfor
-    t{end+1} = sprintf ("%s (%s)", mats{i}, strjoin (st, "; "));
-  endfor
-  s = strjoin (t, ", ");
-endfunction
-
-function s = lobes_txt (v, fmt = "%.2f")
-  s = strjoin (arrayfun (@(x) sprintf (fmt, x), v, "uniformoutput", false), " / ");
-endfunction
-
-function s = plural (k)
-  s = ifelse (k == 1, "", "s");
-endfunction
-
-## the materials IDX with their values V, e.g. "gold (FLIP 0.612)"
-function s = names_val (mats, idx, v, fmt)
-  if (isempty (idx))
-    s = "none";
-  else
-    s = strjoin (arrayfun (@(j) sprintf (["%s (" fmt ")"], mats{idx(j)}, v(j)), 1:numel (idx),
-                           "uniformoutput", false), ", ");
-  endif
 endfunction
 
 function s = csv_row (v)
@@ -814,6 +331,10 @@ endfunction
 
 function s = html_escape (s)
   s = strrep (strrep (strrep (s, "&", "&amp;"), "<", "&lt;"), ">", "&gt;");
+endfunction
+
+function s = lobes_txt (v, fmt = "%.2f")
+  s = strjoin (arrayfun (@(x) sprintf (fmt, x), v, "uniformoutput", false), " / ");
 endfunction
 
 function s = ifelse (c, a, b)

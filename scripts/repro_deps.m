@@ -10,9 +10,9 @@
 ## SCRIPT_STEP: the step's function; UP_STEP: the steps whose records it
 ## reads), and DEPS_SCRIPT for the script of every step and whole-run job:
 ## the project files that it can call, directly or through other functions:
-## scripts/*.m, inst/*.m, the folders by area inst/*/*.m and their
-## private folders, and the oct-files' sources
-## src/*.cc.  Like a compiler's -MM: found from the code (every name in a
+## scripts/*.m, the reports' templates scripts/templates/*.md (report_fill),
+## inst/*.m, the folders by area inst/*/*.m and their private folders, and
+## the oct-files' sources src/*.cc.  Like a compiler's -MM: found from the code (every name in a
 ## line that is not a comment or a test block that is also the name of a
 ## project function), so a change to a function re-runs only the steps that
 ## may call it.  Every step also depends on repro_material and repro_step (the runners) and what
@@ -23,13 +23,13 @@ function repro_deps (file)
   steps = [{F.steps.script}, F.jobs];
   top = fullfile (fileparts (mfilename ("fullpath")), "..");
   files = {};
-  for pat = {"scripts/*.m", "inst/*.m", "inst/*/*.m", "inst/*/private/*.m", "src/*.cc"}
+  for pat = {"scripts/*.m", "scripts/templates/*.md", "inst/*.m", "inst/*/*.m", "inst/*/private/*.m", "src/*.cc"}
     d = glob (fullfile (top, pat{1}));
     for j = 1:numel (d)
       files{end+1} = d{j}(numel (top) + 2:end);
     endfor
   endfor
-  names = regexprep (files, '^.*/|\.(m|cc)$', "");
+  names = regexprep (files, '^.*/|\.(m|cc|md)$', "");
   ## the project names each file mentions
   uses = cell (size (files));
   for i = 1:numel (files)
