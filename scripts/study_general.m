@@ -266,6 +266,165 @@ function c = notes_of (r)
   endif
 endfunction
 
+## the settings from the environment: the folder of MERL files, the
+## results file, the materials, the published fits ("" when absent)
+function [merl, out, names, ngan] = settings_of (here)
+  merl = getenv ("MERL_DIR");
+  if (isempty (merl) || ! isfolder (merl))
+    error ("study_general: set MERL_DIR to a folder of MERL .binary files");
+  endif
+  out = getenv ("OUT");
+  if (isempty (out))
+    out = "study-general.json";
+  endif
+  names = strsplit (strtrim (getenv ("MATERIALS")));
+  names = names(! cellfun (@isempty, names));
+  if (isempty (names))
+    files = dir (fullfile (merl, "*.binary"));
+    names = regexprep ({files.name}, '\.binary$', "");
+  endif
+  if (isempty (names))
+    error ("study_general: no *.binary files in %s", merl);
+  endif
+  for i = 1:numel (names)
+    if (! exist (fullfile (merl, [names{i} ".binary"]), "file"))
+      error ("study_general: no file %s.binary in %s", names{i}, merl);
+    endif
+  endfor
+  ngan = getenv ("NGAN_TSV");
+  if (isempty (ngan))
+    ngan = fullfile (here, "..", "..", "shared", "data", "ngan2005", "lafortune-1lobe.tsv");
+  endif
+  if (! exist (ngan, "file"))
+    printf ("study_general: no table of published fits (%s): no ngan2005 fits\n", ngan);
+    ngan = "";
+  endif
+endfunction
+
+## A: the median FLIP per method and lobe count, per light and for the
+## mean over the lights
+function print_medians (X, have, methods, lnames, n)
+  nl = numel (lnames);
+  printf ("\n## A. Median FLIP over %d materials (rt_render, sphere 128 x 128, 2 spp)\n", n);
+  for l = 1:nl
+    printf ("\n**%s**\n\n| method | 1 lobe | 2 lobes | 3 lobes |\n|---|---|---|---|\n", lnames{l});
+    for m = 1:numel (methods)
+      if (! any (have(:,m,:,l)(:)))
+        continue;
+      endif
+      printf ("| %s |", methods{m});
+      for k = 1:3
+        printf (" %s |", med_str (X(:,m,k,l), have(:,m,k,l)));
+      endfor
+      printf ("\n");
+    endfor
+  endfor
+endfunction
+
+## B: the general fit's targets beside the hemisphere weightings alone,
+## where it is not below the published fit, where FLIP rises with a lobe
+function print_targets (X, have, methods, lnames, mats, n)
+  nl = numel (lnames);
+  mi = @(m) find (strcmp (methods, m));
+  printf ("\n## B. Targets (general beside the hemisphere weightings alone)\n\n");
+  cmp = {"general", "log", "cuberoot", "relative", "log_cos", "cuberoot_cos", "relative_cos"};
+  printf ("| target | %s |\n|---|%s\n", strjoin (cmp, " | "), repmat ("---|", 1, numel (cmp)));
+  lb = find (strcmp (lnames, "behind"));
+  o3 = X(:,mi("oracle"),3,lb);
+  row = @(label, f) printf ("| %s |%s\n", label,
+                             sprintf (" %s |", cellfun (f, cmp, "UniformOutput", false){:}));
+  row ("(i) behind, 3 lobes: median FLIP / oracle's median",
+        @(c) sprintf ("%.3f", median (X(! isnan (X(:,mi(c),3,lb)),mi(c),3,lb))
+                              / median (o3(! isnan (o3)))));
+  row ("(i) behind, 3 lobes: median of FLIP / oracle's per material",
+        @(c) sprintf ("%.3f", median ((X(:,mi(c),3,lb) ./ o3)(! isnan (X(:,mi(c),3,lb) ./ o3)))));
+  for l = 1:nl
+    for k = 1:3
+      row (sprintf ("(ii) %s, %d lobe(s): FLIP below scene's", lnames{l}, k),
+            @(c) count_str (X(:,mi(c),k,l), X(:,mi("scene"),k,l), have(:,mi(c),k,l)));
+    endfor
+  endfor
+  for l = 1:nl
+    row (sprintf ("(iii) %s, 1 lobe: FLIP below ngan2005's", lnames{l}),
+          @(c) count_str (X(:,mi(c),1,l), X(:,mi("ngan2005"),1,l), have(:,mi("ngan2005"),1,l)));
+  endfor
+  for l = 1:nl
+    row (sprintf ("(iv) %s: largest rise k -> k+1 (material)", lnames{l}),
+          @(c) rise_str (rises (reshape (X(:,mi(c),:,l), n, 3)), mats));
+    row (sprintf ("(iv) %s: materials rising > 0.002", lnames{l}),
+          @(c) sprintf ("%d", nnz (rises (reshape (X(:,mi(c),:,l), n, 3)) > 0.002)));
+  endfor
+
+  printf ("\nWhere the 1-lobe FLIP is not below ngan2005's (general; FLIP general / ngan2005):\n\n");
+  g = mi ("general");
+  p = mi ("ngan2005");
+  for l = 1:nl
+    s = have(:,p,1,l) & ! (X(:,g,1,l) < X(:,p,1,l));
+    printf ("- %s: %s\n", lnames{l}, list_str (mats(s), X(s,g,1,l), X(s,p,1,l)));
+  endfor
+  printf ("\nWhere FLIP rises by more than 0.002 with a lobe (material: largest rise):\n\n");
+  for c = cmp
+    for l = 1:nl
+      r = rises (reshape (X(:,mi(c{1}),:,l), n, 3));
+      s = r > 0.002;
+      printf ("- %s, %s: %s\n", c{1}, lnames{l}, list_str (mats(s), r(s)));
+    endfor
+  endfor
+endfunction
+
+## C: the weighting the general fit kept, per material and lobe count
+function print_kept (recs, mats, n)
+  printf ("\n## C. The weighting the general fit kept (its lobe count before padding)\n\n");
+  printf ("| material | 1 lobe | 2 lobes | 3 lobes | views FLIP, %s |\n|---|---|---|---|---|\n",
+          "1-3 lobes per candidate");
+  kept = cell (n, 3);
+  for i = 1:n
+    sel = recs{i}.selection;
+    W = cellstr (sel.weights);
+    for k = 1:3
+      kept{i,k} = sprintf ("%s (%d)", W{sel.chosen(k)}, sel.lobes(k));
+    endfor
+    Fv = reshape (sel.flip, numel (W), []);
+    printf ("| %s | %s | %s |\n", mats{i}, strjoin (kept(i,:), " | "),
+            strjoin (cellfun (@(w, r) sprintf ("%s%s", w, sprintf (" %.4f", r)),
+                              W(:)', num2cell (Fv, 2)', "UniformOutput", false), "; "));
+  endfor
+  printf ("\nCounts:\n\n");
+  for k = 1:3
+    [u, ~, j] = unique (kept(:,k));
+    printf ("- %d lobe(s): %s\n", k, strjoin (cellfun (@(x, c) sprintf ("%s %d", x, c), u(:)',
+                                                      num2cell (accumarray (j(:), 1))',
+                                                      "UniformOutput", false), ", "));
+  endfor
+endfunction
+
+## D: the times per material, of each fit and of each light's judging
+function print_times (recs, mats, methods, light_names, n)
+  printf ("\n## D. Time per material (s; a fit's time includes its own table; hemi: the table of log, cuberoot, plain)\n\n");
+  fm = methods(1:end-1);
+  printf ("| material |%s hemi |%s total |\n|---|%s\n", sprintf (" %s |", fm{:}),
+          sprintf (" judge %s |", light_names{:}), repmat ("---|", 1, numel (fm) + numel (light_names) + 2));
+  T = NaN (n, numel (fm) + 1 + numel (light_names));
+  for i = 1:n
+    F = as_cell (recs{i}.fits);
+    for f = 1:numel (F)
+      m = find (strcmp (fm, F{f}.method));
+      if (! isempty (m))
+        T(i,m) = F{f}.time;
+      endif
+    endfor
+    T(i,numel (fm) + 1) = recs{i}.time_tables.hemisphere;
+    J = as_cell (recs{i}.judge);
+    for j = 1:numel (J)
+      T(i,numel (fm) + 1 + find (strcmp (light_names, J{j}.light))) = J{j}.time;
+    endfor
+    printf ("| %s |%s %.0f |\n", mats{i}, sprintf (" %.1f |", T(i,:)), sum (T(i,:)));
+  endfor
+  if (n > 0)
+    printf ("| median |%s %.0f |\n", sprintf (" %.1f |", median (T, 1)), median (sum (T, 2)));
+  endif
+endfunction
+
 warning ("off", "Octave:shadowed-function");
 warning ("off", "lafortune:notConverged");
 warning ("error", "lafortune:noLightProbe");   # a missing probe is no judge
@@ -273,36 +432,7 @@ pkg load optim;
 here = fileparts (mfilename ("fullpath"));
 addpath (here);                                  # repro_save
 
-merl = getenv ("MERL_DIR");
-if (isempty (merl) || ! isfolder (merl))
-  error ("study_general: set MERL_DIR to a folder of MERL .binary files");
-endif
-out = getenv ("OUT");
-if (isempty (out))
-  out = "study-general.json";
-endif
-names = strsplit (strtrim (getenv ("MATERIALS")));
-names = names(! cellfun (@isempty, names));
-if (isempty (names))
-  files = dir (fullfile (merl, "*.binary"));
-  names = regexprep ({files.name}, '\.binary$', "");
-endif
-if (isempty (names))
-  error ("study_general: no *.binary files in %s", merl);
-endif
-for i = 1:numel (names)
-  if (! exist (fullfile (merl, [names{i} ".binary"]), "file"))
-    error ("study_general: no file %s.binary in %s", names{i}, merl);
-  endif
-endfor
-ngan = getenv ("NGAN_TSV");
-if (isempty (ngan))
-  ngan = fullfile (here, "..", "..", "shared", "data", "ngan2005", "lafortune-1lobe.tsv");
-endif
-if (! exist (ngan, "file"))
-  printf ("study_general: no table of published fits (%s): no ngan2005 fits\n", ngan);
-  ngan = "";
-endif
+[merl, out, names, ngan] = settings_of (here);
 
 methods = {"general", "log", "cuberoot", "plain", "relative", "log_cos", "cuberoot_cos", "relative_cos", ...
            "scene", "oracle", "inplane", "ngan2005"};
@@ -348,112 +478,10 @@ lnames = [light_names, {"mean"}];
 nl = numel (lnames);
 mi = @(m) find (strcmp (methods, m));
 
-printf ("\n## A. Median FLIP over %d materials (rt_render, sphere 128 x 128, 2 spp)\n", n);
-for l = 1:nl
-  printf ("\n**%s**\n\n| method | 1 lobe | 2 lobes | 3 lobes |\n|---|---|---|---|\n", lnames{l});
-  for m = 1:numel (methods)
-    if (! any (have(:,m,:,l)(:)))
-      continue;
-    endif
-    printf ("| %s |", methods{m});
-    for k = 1:3
-      printf (" %s |", med_str (X(:,m,k,l), have(:,m,k,l)));
-    endfor
-    printf ("\n");
-  endfor
-endfor
-
-printf ("\n## B. Targets (general beside the hemisphere weightings alone)\n\n");
-cmp = {"general", "log", "cuberoot", "relative", "log_cos", "cuberoot_cos", "relative_cos"};
-printf ("| target | %s |\n|---|%s\n", strjoin (cmp, " | "), repmat ("---|", 1, numel (cmp)));
-lb = find (strcmp (lnames, "behind"));
-o3 = X(:,mi("oracle"),3,lb);
-row = @(label, f) printf ("| %s |%s\n", label,
-                           sprintf (" %s |", cellfun (f, cmp, "UniformOutput", false){:}));
-row ("(i) behind, 3 lobes: median FLIP / oracle's median",
-      @(c) sprintf ("%.3f", median (X(! isnan (X(:,mi(c),3,lb)),mi(c),3,lb))
-                            / median (o3(! isnan (o3)))));
-row ("(i) behind, 3 lobes: median of FLIP / oracle's per material",
-      @(c) sprintf ("%.3f", median ((X(:,mi(c),3,lb) ./ o3)(! isnan (X(:,mi(c),3,lb) ./ o3)))));
-for l = 1:nl
-  for k = 1:3
-    row (sprintf ("(ii) %s, %d lobe(s): FLIP below scene's", lnames{l}, k),
-          @(c) count_str (X(:,mi(c),k,l), X(:,mi("scene"),k,l), have(:,mi(c),k,l)));
-  endfor
-endfor
-for l = 1:nl
-  row (sprintf ("(iii) %s, 1 lobe: FLIP below ngan2005's", lnames{l}),
-        @(c) count_str (X(:,mi(c),1,l), X(:,mi("ngan2005"),1,l), have(:,mi("ngan2005"),1,l)));
-endfor
-for l = 1:nl
-  row (sprintf ("(iv) %s: largest rise k -> k+1 (material)", lnames{l}),
-        @(c) rise_str (rises (reshape (X(:,mi(c),:,l), n, 3)), mats));
-  row (sprintf ("(iv) %s: materials rising > 0.002", lnames{l}),
-        @(c) sprintf ("%d", nnz (rises (reshape (X(:,mi(c),:,l), n, 3)) > 0.002)));
-endfor
-
-printf ("\nWhere the 1-lobe FLIP is not below ngan2005's (general; FLIP general / ngan2005):\n\n");
-g = mi ("general");
-p = mi ("ngan2005");
-for l = 1:nl
-  s = have(:,p,1,l) & ! (X(:,g,1,l) < X(:,p,1,l));
-  printf ("- %s: %s\n", lnames{l}, list_str (mats(s), X(s,g,1,l), X(s,p,1,l)));
-endfor
-printf ("\nWhere FLIP rises by more than 0.002 with a lobe (material: largest rise):\n\n");
-for c = cmp
-  for l = 1:nl
-    r = rises (reshape (X(:,mi(c{1}),:,l), n, 3));
-    s = r > 0.002;
-    printf ("- %s, %s: %s\n", c{1}, lnames{l}, list_str (mats(s), r(s)));
-  endfor
-endfor
-
-printf ("\n## C. The weighting the general fit kept (its lobe count before padding)\n\n");
-printf ("| material | 1 lobe | 2 lobes | 3 lobes | views FLIP, %s |\n|---|---|---|---|---|\n",
-        "1-3 lobes per candidate");
-kept = cell (n, 3);
-for i = 1:n
-  sel = recs{i}.selection;
-  W = cellstr (sel.weights);
-  for k = 1:3
-    kept{i,k} = sprintf ("%s (%d)", W{sel.chosen(k)}, sel.lobes(k));
-  endfor
-  Fv = reshape (sel.flip, numel (W), []);
-  printf ("| %s | %s | %s |\n", mats{i}, strjoin (kept(i,:), " | "),
-          strjoin (cellfun (@(w, r) sprintf ("%s%s", w, sprintf (" %.4f", r)),
-                            W(:)', num2cell (Fv, 2)', "UniformOutput", false), "; "));
-endfor
-printf ("\nCounts:\n\n");
-for k = 1:3
-  [u, ~, j] = unique (kept(:,k));
-  printf ("- %d lobe(s): %s\n", k, strjoin (cellfun (@(x, c) sprintf ("%s %d", x, c), u(:)',
-                                                    num2cell (accumarray (j(:), 1))',
-                                                    "UniformOutput", false), ", "));
-endfor
-
-printf ("\n## D. Time per material (s; a fit's time includes its own table; hemi: the table of log, cuberoot, plain)\n\n");
-fm = methods(1:end-1);
-printf ("| material |%s hemi |%s total |\n|---|%s\n", sprintf (" %s |", fm{:}),
-        sprintf (" judge %s |", light_names{:}), repmat ("---|", 1, numel (fm) + numel (light_names) + 2));
-T = NaN (n, numel (fm) + 1 + numel (light_names));
-for i = 1:n
-  F = as_cell (recs{i}.fits);
-  for f = 1:numel (F)
-    m = find (strcmp (fm, F{f}.method));
-    if (! isempty (m))
-      T(i,m) = F{f}.time;
-    endif
-  endfor
-  T(i,numel (fm) + 1) = recs{i}.time_tables.hemisphere;
-  J = as_cell (recs{i}.judge);
-  for j = 1:numel (J)
-    T(i,numel (fm) + 1 + find (strcmp (light_names, J{j}.light))) = J{j}.time;
-  endfor
-  printf ("| %s |%s %.0f |\n", mats{i}, sprintf (" %.1f |", T(i,:)), sum (T(i,:)));
-endfor
-if (n > 0)
-  printf ("| median |%s %.0f |\n", sprintf (" %.1f |", median (T, 1)), median (sum (T, 2)));
-endif
+print_medians (X, have, methods, lnames, n);
+print_targets (X, have, methods, lnames, mats, n);
+print_kept (recs, mats, n);
+print_times (recs, mats, methods, light_names, n);
 
 notes = {};
 for i = 1:n
