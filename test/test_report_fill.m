@@ -43,6 +43,10 @@
 %! put (d, "part", "(part {{t}})\n");
 %! put (d, "main", "a\n{{>part}}\nb\n");
 %! assert (report_fill (fullfile (d, "main.md"), struct ("t", 1)), "a\n(part 1)\nb\n");
+%! ## a partial that ends with a blank line keeps it (one end of line is the tag's)
+%! put (d, "part2", "x\n\n");
+%! put (d, "main2", "{{>part2}}\ny\n");
+%! assert (report_fill (fullfile (d, "main2.md"), struct ()), "x\n\ny\n");
 
 %!test
 %! ## the pipeline's templates exist and name only what their reports give
