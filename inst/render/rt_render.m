@@ -343,7 +343,7 @@ function [img, info, cache] = rt_render (scene, material, varargin)
 
       t0 = tic ();
       if (! cached)
-        il = find (T.lit);
+        il = find (T.lit)(:);        # a column, also for a chunk of one sample
         if (strcmp (mode, "slice"))
           Tc = struct ("h", int32 (T.h(il)), "w", slice_weights (sl, T.Ns(il,:)),
                        "cosi", T.cosi(il), "miss", T.miss);
@@ -570,6 +570,14 @@ endfunction
 %! sb = sc; sb.background = [0.1 0.2 0.3];
 %! [~, ~, Cb] = rt_render (sb, lam, "progress", false);
 %! assert (isequal (rt_render (sb, m, "cache", Cb, "progress", false), rt_render (sb, m, "progress", false)));
+%! ## a last chunk of one sample (a miss, and a hit), traced and from the cache
+%! sq = scene_make ("sphere", "size", [6 4]);
+%! sq.spp = 2;
+%! for ch = [47 23]
+%!   [a, ~, C] = rt_render (sq, m, "chunk", ch, "progress", false);
+%!   assert (isequal (a, rt_render (sq, m, "cache", C, "chunk", ch, "progress", false)));
+%!   assert (all (isfinite (a(:))) && nnz (a) > 0);
+%! endfor
 %! ## direct mode keeps no cache
 %! [~, ~, Cd] = rt_render (scene_make ("sphere", "size", 6, "camera", "perspective"), lam, "progress", false);
 %! assert (isempty (Cd));

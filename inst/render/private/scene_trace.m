@@ -37,7 +37,7 @@
 function [T, times] = scene_trace (objs, scene, O, D, epsilon, k = [], env = [])
   t0 = tic ();
   hit = rt_intersect (objs, O, D, epsilon, Inf);
-  h = find (hit.obj > 0);
+  h = find (hit.obj > 0)(:);           # a column, also for one ray
   t_int = toc (t0);
 
   t0 = tic ();
