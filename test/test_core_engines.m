@@ -10,7 +10,9 @@
 ## (lafortune_fit) are compared bit for bit, on ordinary, stiff and extreme
 ## models.  The same for pov_knots's greedy refinement of one table, which
 ## calls the oct-file __pov_knots__ when it is built: the entries it chooses
-## on random tables (ties, NaN, masks) and whole POV-Ray scene files.
+## on random tables (ties, NaN, masks) and whole POV-Ray scene files.  And
+## rt_render's sums of the samples into the pixels (__rt_accum__): whole
+## renders and renders from the trace cache.
 
 %!function varargout = __octave_engine (fn, oct = "__lafortune_core__")
 %!  ## FN () with the oct-file OCT off the path
@@ -314,3 +316,49 @@
 %!   cd (here);
 %!   rand ("state", state);
 %! end_unwind_protect
+
+%!function [img, cache] = __render_and_cache (S, m, o)
+%!  [img, ~, cache] = rt_render (S, m, "progress", false, o{:});
+%!endfunction
+
+%!test
+%! ## rt_render's sums of the samples into the pixels (add_samples, which
+%! ## calls the oct-file __rt_accum__ when it is built): whole renders and
+%! ## renders from the trace cache, bit for bit without the oct-file, in
+%! ## slice mode and lights mode, with a black and a coloured background,
+%! ## chunks holding a pixel several times (chunk > pixels), and a last
+%! ## chunk of one sample
+%! m = struct ("rho_d", [0.3 0.2 0.1], "Cxy", [-0.8 -0.8 -0.8], "Cz", [0.7 0.7 0.7], "e", [20 20 20]);
+%! sc = scene_make ("sphere", "size", [24 16]);
+%! sc.spp = 4;
+%! sb = sc;
+%! sb.background = [0.1 0.2 0.3];
+%! se = scene_make ("sphere", "size", [20 12], "light", "environment", "map", "sky");
+%! se.spp = 2;
+%! sf = se;
+%! sf.background = [0.2 0.1 0.05];
+%! cases = {sc, {"chunk", 500}; sb, {"chunk", 700}; sb, {"chunk", 1535}; sc, {"chunk", 5000};
+%!          se, {"chunk", 300, "light_samples", 8}; sf, {"chunk", 900, "light_samples", 8}};
+%! for i = 1:rows (cases)
+%!   [S, o] = cases{i,:};
+%!   [a, ~, C] = rt_render (S, m, "progress", false, o{:});
+%!   b = rt_render (S, m, "progress", false, "cache", C, o{:});
+%!   [a0, C0] = __octave_engine (@() __render_and_cache (S, m, o), "__rt_accum__");
+%!   b0 = __octave_engine (@() rt_render (S, m, "progress", false, "cache", C0, o{:}), "__rt_accum__");
+%!   assert (__same_bits (a, a0) && __same_bits (b, b0), "case %d: the sums differ without the oct-file", i);
+%!   assert (__same_bits (a, b), "case %d: the cached render differs", i);
+%!   assert (nnz (a) > 0);
+%! endfor
+
+%!error <NPIX must be> __rt_accum__ (0, 0, int32 (1), [1 2 3], false, [0 0 0])
+%!error <LITH must be int32> __rt_accum__ (4, 0, 1, [1 2 3], false, [0 0 0])
+%!error <RAD must be> __rt_accum__ (4, 0, int32 (1), [1 2], false, [0 0 0])
+%!error <LITH must hold sample indices> __rt_accum__ (4, 0, int32 (2), [1 2 3], false, [0 0 0])
+%!test
+%! ## the sums of one chunk: pixels in the order of their first sample
+%! [p, s] = __rt_accum__ (3, 1, int32 ([1; 1; 3; 4]), [1 1 1; 2 2 2; 3 3 3; 4 4 4], false (4, 1), [0 0 0]);
+%! assert (p, [2; 1]);
+%! assert (s, [7 7 7; 3 3 3]);
+%! [p, s] = __rt_accum__ (3, 0, int32 (2), [1 2 3], [true; false; true], [0.5 0 0]);
+%! assert (p, [1; 2; 3]);
+%! assert (s, [0.5 0 0; 1 2 3; 0.5 0 0]);

@@ -305,11 +305,10 @@ function [img, info, cache] = rt_render (scene, material, varargin)
     for k0 = 0:chunk:last
       m = min (chunk, total - k0);
       ic = k0 / chunk + 1;
-      k = k0 + (0:m-1).';
-      pix = mod (k, npix) + 1;
       if (cached)
         Tc = opt.cache.chunks{ic};
       else
+        k = k0 + (0:m-1).';
         t0 = tic ();
         [O, D] = sample_rays (scene, cam, k, opt.jitter);
         t_int += toc (t0);
@@ -327,7 +326,7 @@ function [img, info, cache] = rt_render (scene, material, varargin)
         if (sum (nrow(done+1:ic)) >= batch || k0 + m >= total)
           t0 = tic ();
           [acc, te] = shade_lights (acc, material, vertcat (Xs{done+1:ic}), chunks, nrow,
-                                    done+1:ic, chunk, total, npix, bg);
+                                    done+1:ic, chunk, bg);
           t_brdf += te;
           t_shade += toc (t0);
           if (! keep)
@@ -365,7 +364,7 @@ function [img, info, cache] = rt_render (scene, material, varargin)
         lith = T.h(il);
         miss = T.miss;
       endif
-      acc = add_samples (acc, pix, lith, rad, miss, bg);
+      acc = add_samples (acc, k0, lith, rad, miss, bg);
       t_shade += toc (t0);
 
       if (opt.progress)
@@ -381,7 +380,7 @@ function [img, info, cache] = rt_render (scene, material, varargin)
       upto = max (done + 1, find (off(2:end) - off(done+1) <= batch, 1, "last"));
       t0 = tic ();
       [acc, te] = shade_lights (acc, material, Xall(off(done+1)+1:off(upto+1),:), chunks,
-                                nrow, done+1:upto, chunk, total, npix, bg);
+                                nrow, done+1:upto, chunk, bg);
       t_brdf += te;
       t_shade += toc (t0);
       done = upto;
@@ -420,27 +419,45 @@ endfunction
 ## Lights mode: the chunks IC (whose light samples' X, stacked, are X) shaded
 ## by MATERIAL in one evaluation and added to ACC chunk by chunk; TE is the
 ## evaluation's time
-function [acc, te] = shade_lights (acc, material, X, chunks, nrow, ic, chunk, total, npix, bg)
+function [acc, te] = shade_lights (acc, material, X, chunks, nrow, ic, chunk, bg)
   t1 = tic ();
   F = material_x (material, X);
   te = toc (t1);
   r0 = 0;
   for i = ic
     Tc = chunks{i};
-    k0 = (i - 1) * chunk;
-    pix = mod (k0 + (0:min (chunk, total - k0)-1).', npix) + 1;
     rad = F(r0+1:r0+nrow(i),:) .* double (Tc.w);
     r0 += nrow(i);
-    acc = add_samples (acc, pix, Tc.h, rad, Tc.miss, bg);
+    acc = add_samples (acc, (i - 1) * chunk, Tc.h, rad, Tc.miss, bg);
   endfor
 endfunction
 
-## each pixel's sum over a chunk's samples (pixels PIX) in their order: the
-## lit samples LITH with radiance RAD, the misses MISS with the background
-## BG; the samples that add 0 (shadow, and misses on a black background) are
-## left out, which changes no bit of the sum
-function acc = add_samples (acc, pix, lith, rad, miss, bg)
+## each pixel's sum over a chunk's samples K0+1 ... K0+M (M = numel
+## (MISS); sample k at pixel mod (k - 1, NPIX) + 1), in their order: the lit
+## samples LITH (int32 indices in the chunk) with radiance RAD, the misses
+## MISS with the background BG; the samples that add 0 (shadow, and misses
+## on a black background) are left out, which changes no bit of the sum.
+## The oct-file __rt_accum__ makes the same sums, compiled, when it is
+## built; this code is the definition and the reference
+function acc = add_samples (acc, k0, lith, rad, miss, bg)
+  persistent broken = false;
+  if (! broken && exist ("__rt_accum__", "file") == 3)
+    try
+      [p, s] = __rt_accum__ (rows (acc), k0, int32 (lith), rad, logical (miss), bg);
+      acc(p,:) += s;
+      return;
+    catch err
+      if (strncmp (err.identifier, "lafortune:", 10))
+        rethrow (err);
+      endif
+      broken = true;
+      warning ("lafortune:noOctFile",
+               "rt_render: the oct-file __rt_accum__ does not work (%s); using the Octave arithmetic (rebuild it: make -C src)",
+               err.message);
+    end_try_catch
+  endif
   npix = rows (acc);
+  pix = mod (k0 + (0:numel (miss)-1).', npix) + 1;
   j = double (lith);
   if (any (bg))
     j = [j; find(miss)];
