@@ -293,7 +293,7 @@ function T = light_tables (scene, material, opt, cam, kind, L, G)
   endif
   ndense = n;
   if (opt.crop && ! isempty (S.ti))
-    samp = [S.ti, S.u];
+    samp = pov_tables ("reach_prep", [S.ti, S.u]);   # once for every grid
   else
     samp = [];
   endif

@@ -10,7 +10,7 @@
 ## where it bends), @code{"slice_grid"} (scene_slice on (ti, inner angle)),
 ## @code{"gamma_levels"}, @code{"view_at_gamma"} (a perspective camera's
 ## levels of angle (L, V)), @code{"inner_coord"}, @code{"inner_of"},
-## @code{"reach_bounds"}, @code{"reach_mask"} (the inner maps' angle and
+## @code{"reach_bounds"}, @code{"reach_prep"}, @code{"reach_mask"} (the inner maps' angle and
 ## what normals and the view reach), @code{"masked_max"},
 ## @code{"masked_quantile"}, @code{"term_knots"} (a term's table cut to
 ## the entries pov_knots places: outer knots IO over ti, inner knots KI).  A new
@@ -29,6 +29,8 @@ function varargout = pov_tables (what, varargin)
       [varargout{1:max (nargout, 1)}] = term_grid (varargin{:});
     case "reach_mask"
       [varargout{1:max (nargout, 1)}] = reach_mask (varargin{:});
+    case "reach_prep"
+      [varargout{1:max (nargout, 1)}] = reach_prep (varargin{:});
     case "inner_coord"
       [varargout{1:max (nargout, 1)}] = inner_coord (varargin{:});
     case "inner_of"
@@ -60,7 +62,7 @@ function gl = gamma_levels (scene, material, L, S, rng_i, rng_o, opt)
   g1 = min (pi, max (S.gamma) + opt.pad);
   t = linspace (rng_i(1), rng_i(2), 65);
   u = linspace (rng_o(1), rng_o(2), 65);
-  M = reach_mask ([S.ti, S.to], t', u', opt.pad);
+  M = reach_mask (reach_prep ([S.ti, S.to]), t', u', opt.pad);
   tab = @(g) masked (scene_slice (view_at_gamma (scene, L, g), material, t, u), M);
   gl = [g0; g1];
   R = {tab(g0), tab(g1)};
@@ -194,31 +196,38 @@ function y = regrid (x, k, n)
   y([1 end]) = x([1 end]);
 endfunction
 
-## reachable cells of the (ti, to) grid: for each ti row, the range of to of
-## the samples within PAD of it, widened by PAD
-function Md = reach_mask (samp, ti, to, pad)
-  n = numel (ti);
+## The view's samples SAMP (points x [ti, inner angle]) prepared for
+## reach_mask: sorted by ti (stably), and the tables of range_minmax over
+## their inner angles, made once for every grid of a view
+function R = reach_prep (samp)
   [sti, o] = sort (samp(:,1));
   sto = samp(o,2);
-  a = lookup (sti, ti - pad) + 1;               # samples a:b lie within PAD
-  b = lookup (sti, ti + pad);
+  [Mn, Mx] = minmax_tables (sto, numel (sto));
+  R = struct ("ti", sti, "to", sto, "Mn", Mn, "Mx", Mx);
+endfunction
+
+## reachable cells of the (ti, to) grid: for each ti row, the range of to of
+## the samples within PAD of it, widened by PAD (R from reach_prep)
+function Md = reach_mask (R, ti, to, pad)
+  n = numel (ti);
+  a = lookup (R.ti, ti - pad) + 1;              # samples a:b lie within PAD
+  b = lookup (R.ti, ti + pad);
   lo = inf (n, 1);
   hi = -inf (n, 1);
   i = find (b >= a);
   if (! isempty (i))
-    [lo(i), hi(i)] = range_minmax (sto, a(i), b(i));
+    [lo(i), hi(i)] = range_minmax (R.Mn, R.Mx, a(i), b(i));
   endif
   Md = to' >= lo - pad & to' <= hi + pad;
 endfunction
 
-## min and max of X(A(i):B(i)) for every i, all at once: column k of MN
-## (MX) holds the minima (maxima) of the runs of 2^(k-1) values from each
-## index, and a run A:B is the union of two such runs, from A and from B
-## backwards
-function [mn, mx] = range_minmax (x, a, b)
+## The tables of range_minmax over X: column k of MN (MX) holds the minima
+## (maxima) of the runs of 2^(k-1) values from each index, for the runs up
+## to L values
+function [Mn, Mx] = minmax_tables (x, L)
   x = x(:);
   N = numel (x);
-  [~, e] = log2 (max (b - a + 1));
+  [~, e] = log2 (max (L, 1));
   Mn = Mx = zeros (N, e);
   Mn(:,1) = Mx(:,1) = x;
   for k = 2:e
@@ -226,6 +235,13 @@ function [mn, mx] = range_minmax (x, a, b)
     Mn(:,k) = min (Mn(:,k-1), [Mn(s+1:end,k-1); inf(s, 1)]);
     Mx(:,k) = max (Mx(:,k-1), [Mx(s+1:end,k-1); -inf(s, 1)]);
   endfor
+endfunction
+
+## min and max of X(A(i):B(i)) for every i, all at once, from X's tables
+## (minmax_tables): a run A:B is the union of two runs of 2^(k-1) values,
+## from A and from B backwards
+function [mn, mx] = range_minmax (Mn, Mx, a, b)
+  N = rows (Mn);
   [~, k] = log2 (b - a + 1);                    # 2^(k-1) <= B - A + 1 < 2^k
   i1 = a + N * (k - 1);
   i2 = b - 2 .^ (k - 1) + 1 + N * (k - 1);
