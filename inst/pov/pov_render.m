@@ -47,9 +47,8 @@
 ## between frames; each process then has one render thread unless
 ## @qcode{"threads"} says otherwise), and the frames are added up.
 ## Several materials (a cell array) are rendered in the same scene at once:
-## their scenes are written one after the other, each one's POV-Ray runs
-## starting as soon as it is written (while the next is written), in up to
-## 32 processes at once, each with one render thread unless
+## their scenes are written one after the other, and their POV-Ray runs go
+## to up to 32 processes at once, each with one render thread unless
 ## @qcode{"threads"} says otherwise; @var{imgs} and @var{infos} are cell
 ## arrays, each image the one a call of its own gives.
 ## A run that POV-Ray gives up because its render threads did not start in
@@ -127,7 +126,6 @@ function [img, info] = pov_render (scene, material, varargin)
   if (! ok)
     error ("lafortune:unwritable", "%s: cannot make the folder '%s': %s", fname, d, msg);
   endif
-  run = struct ("pid", {}, "n", {});           # the POV-Ray runs started, not yet waited for
   unwind_protect
     ## every material's scene, each in a folder of its own, and the POV-Ray
     ## runs they need: one, or one per group of its lights' frames
@@ -178,7 +176,6 @@ function [img, info] = pov_render (scene, material, varargin)
         args = [args, sprintf(" +WT%d", tj)];
       endif
       M(i).args = args;
-      j0 = numel (jobs);
       if (K > 1)
         e = round (linspace (0, K, min (K, 32) + 1));
         for j = 1:numel (e) - 1
@@ -187,10 +184,8 @@ function [img, info] = pov_render (scene, material, varargin)
       else
         jobs(end+1) = struct ("m", i, "args", args);
       endif
-      ## its POV-Ray runs start now, while the next scene is written
-      run = run_jobs (run, exe, jobs, j0+1:numel (jobs), M, d);
     endfor
-    run = wait_runs (run, 0);
+    cmd = run_jobs (exe, jobs, M, d);
     img = cell (1, nm);
     info = cell (1, nm);
     for i = 1:nm
@@ -252,7 +247,6 @@ function [img, info] = pov_render (scene, material, varargin)
       endif
     endif
   unwind_protect_cleanup
-    wait_runs (run, 0);                       # nothing runs in the folder removed
     confirm_recursive_rmdir (false, "local");
     rmdir (d, "s");
   end_unwind_protect
@@ -262,18 +256,15 @@ function [img, info] = pov_render (scene, material, varargin)
   endif
 endfunction
 
-## Start the POV-Ray JOBS(J) (job j in its material's folder, its output in
+## Run the POV-Ray JOBS (job j in its material's folder, its output in
 ## logJ.txt, its exit status in statusJ.txt, its start and end times in
-## timeJ.txt) in the background, and add the run to RUN.  At most 32 run at
-## once: the oldest runs are waited for first.  POV-Ray gives up when its
-## render threads do not start within its own time limit, which a loaded
-## machine can exceed: that run is tried again (at most 3 times); any other
-## failure is left to the caller
-function run = run_jobs (run, exe, jobs, J, M, d)
-  n = min (numel (J), 32);
-  run = wait_runs (run, 32 - n);
+## timeJ.txt), at most 32 at once.  POV-Ray gives up when its render
+## threads do not start within its own time limit, which a loaded machine
+## can exceed: that run is tried again (at most 3 times); any other failure
+## is left to the caller at once.  Returns the shell command
+function cmd = run_jobs (exe, jobs, M, d)
   lines = {"set +m"};
-  for j = J
+  for j = 1:numel (jobs)
     dir = M(jobs(j).m).dir;
     log = sprintf ("log%d.txt", j);
     lines{end+1} = sprintf (["(cd %s && t0=$(date +%%s.%%N); for a in 1 2 3; do %s %s > %s 2>&1; s=$?; ", ...
@@ -284,21 +275,12 @@ function run = run_jobs (run, exe, jobs, J, M, d)
     lines{end+1} = "while [ $(jobs -rp | wc -l) -ge 32 ]; do wait -n; done";
   endfor
   lines{end+1} = "wait";
-  script = fullfile (d, sprintf ("run%d.sh", J(1)));
+  script = fullfile (d, "run.sh");
   fid = fopen (script, "w");
   fprintf (fid, "%s\n", lines{:});
   fclose (fid);
-  pid = system (sprintf ("bash %s", shell_quote (script)), false, "async");
-  run(end+1) = struct ("pid", pid, "n", n);
-endfunction
-
-## Wait for the oldest runs of RUN until at most N POV-Ray processes are
-## left running
-function run = wait_runs (run, n)
-  while (! isempty (run) && sum ([run.n]) > n)
-    waitpid (run(1).pid);
-    run(1) = [];
-  endwhile
+  cmd = sprintf ("bash %s", shell_quote (script));
+  system (cmd);
 endfunction
 
 function s = fileread_or (f, dflt)
