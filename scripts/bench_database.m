@@ -24,10 +24,6 @@
 ##   octave-cli scripts/bench_database.m
 
 1;
-function s = ifelse_str (c, a, b)
-  if (c) s = a; else s = b; endif
-endfunction
-
 function [wall, S] = run_db (top, merl, jobs, args)
   db = tempname ();
   cmd = sprintf ("make --no-print-directory -s -C '%s' -j%d database MERL_DIR='%s' DB='%s' %s > '%s.log' 2>&1",
@@ -134,7 +130,7 @@ args = getenv ("BENCH_MAKE_ARGS");
 n = numel (dir (fullfile (merl, "*.binary")));
 jobs = max (nproc (), 2);
 printf ("bench_database: %d materials from %s, settings: %s, %d cores\n", n, merl,
-        ifelse_str (isempty (args), "config.mk defaults", args), nproc ());
+        merge (isempty (args), "config.mk defaults", args), nproc ());
 ## the versions: this checkout, and the base exported and built in scratch
 V = struct ("name", {"this checkout", "this checkout, JUDGE= (no held-out judging)"}, "top", top,
             "args", {args, [args " JUDGE="]});
@@ -176,9 +172,9 @@ end_unwind_protect
 printf ("\n| version | jobs | wall time (s) | s per material | it / this checkout |\n|---|---|---|---|---|\n");
 for v = 1:numel (V)
   printf ("| %s | 1 | %.1f | %.1f | %s |\n", V(v).name, V(v).w1, V(v).w1 / n,
-          ifelse_str (v == 1, "", sprintf ("%.2f", V(v).w1 / V(1).w1)));
+          merge (v == 1, "", sprintf ("%.2f", V(v).w1 / V(1).w1)));
   printf ("| %s | %d | %.1f | %.1f | %s |\n", V(v).name, jobs, V(v).wj, V(v).wj / n,
-          ifelse_str (v == 1, "", sprintf ("%.2f", V(v).wj / V(1).wj)));
+          merge (v == 1, "", sprintf ("%.2f", V(v).wj / V(1).wj)));
 endfor
 
 printf ("\nTime per material by stage, 1 job (median over materials, s; Octave start-up not included):\n\n");

@@ -57,7 +57,7 @@ function db_report ()
   held = ! isempty (c.judge);
   plot_lobes_db (X.psnr.pov, c, c.materials, "in-sample PSNR against the measured render (dB), POV-Ray", [],
                  [], repro_files ("fig_psnr_lobes", c.results, ""));
-  plot_lobes_db (X.flip.verdict, c, c.materials, ifelse (held, "held-out FLIP, mean over JUDGE's lights (lower is better)",
+  plot_lobes_db (X.flip.verdict, c, c.materials, merge (held, "held-out FLIP, mean over JUDGE's lights (lower is better)",
                                                           "in-sample FLIP, POV-Ray (lower is better)"), [0 1],
                  c.fail_flip, repro_files ("fig_flip_lobes", c.results, ""));
   repro_save (repro_files ("report", c.results, ""), report_fill ("report_database", db_view (sm)));
@@ -302,7 +302,7 @@ function write_gallery (c, D, P, F, E, H0)
        "<h1>Measured render and Lafortune fits, per material</h1>", "<ul>"};
   for i = 1:numel (D)
     H{end+1} = sprintf ("<li><a href=\"#%s\">%s</a>%s</li>", D(i).material, D(i).material,
-                        ifelse (D(i).ok, "", " (failed)"));
+                        merge (D(i).ok, "", " (failed)"));
   endfor
   H{end+1} = "</ul>";
   lobes = strjoin (arrayfun (@num2str, c.lobes, "uniformoutput", false), "/");
@@ -337,6 +337,3 @@ function s = lobes_txt (v, fmt = "%.2f")
   s = strjoin (arrayfun (@(x) sprintf (fmt, x), v, "uniformoutput", false), " / ");
 endfunction
 
-function s = ifelse (c, a, b)
-  if (c) s = a; else s = b; endif
-endfunction

@@ -26,7 +26,9 @@ function [sm, X] = db_summary (c, D)
   sm.published = published (c, D, ok, X);
   sm.rank_disagreement = disagreement (c, ok, X);
   sm.flip_rises = db_verdicts (c, ok, X, "rises");
-  sm.fails = db_verdicts (c, ok, X, "fails");
+  mp = cellfun (@repro_method, c.methods);
+  sm.lafortune_methods = c.methods(strcmp ({mp.model}, "lafortune"));   # the Lafortune model's
+  sm.fails = db_verdicts (c, ok, X, "fails", sm.lafortune_methods);
   for m = c.methods
     sm.methods.(m{1}) = db_verdicts (c, ok, X, "method", m{1}, sm.methods.(m{1}));
   endfor
@@ -77,7 +79,6 @@ function [sm, X] = db_summary (c, D)
   endif
   sm.sheets = arrayfun (@(d) sheet_files (d), D);
   sm.ok = [D.ok];
-  sm.errors = {D.error};
 endfunction
 
 ## every measure (materials x lobes) per method and renderer: X.flip.pov.scene,
@@ -117,7 +118,7 @@ function X = measures (c, D, ok)
         endif
       endfor
     endfor
-    X.(q{1}).verdict = X.(q{1}).(ifelse (nj > 0, "heldout", "pov"));
+    X.(q{1}).verdict = X.(q{1}).(merge (nj > 0, "heldout", "pov"));
   endfor
   if (nj > 0)
     X.verdict = sprintf ("held-out FLIP (the mean over %s, rt_render; no fit was made for these lights)",
@@ -268,8 +269,4 @@ function s = sheet_files (d)
       s.heldout_file = d.rec.sheet.heldout_file;
     endif
   endif
-endfunction
-
-function s = ifelse (c, a, b)
-  if (c) s = a; else s = b; endif
 endfunction

@@ -3,7 +3,7 @@
 
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{S} =} db_verdicts (@var{c}, @var{ok}, @var{X}, "rises")
-## @deftypefnx {} {@var{S} =} db_verdicts (@var{c}, @var{ok}, @var{X}, "fails")
+## @deftypefnx {} {@var{S} =} db_verdicts (@var{c}, @var{ok}, @var{X}, "fails", @var{lm})
 ## @deftypefnx {} {@var{S} =} db_verdicts (@var{c}, @var{ok}, @var{X}, "method", @var{m}, @var{S})
 ## The verdicts of `make database`'s summary (db_summary), on the measure
 ## every verdict is made on (@code{X.flip.verdict}: held-out FLIP, or
@@ -13,7 +13,8 @@
 ## "rises": the materials where the recommended fit (general) renders worse
 ## with one more lobe (FLIP up by more than FAIL_FLIP_DROP), each with its
 ## steps (@code{from}, @code{to} lobes, the changes of @code{flip} and
-## @code{psnr}).  "fails": the materials where the Lafortune model fails:
+## @code{psnr}).  "fails": the materials where the Lafortune model (its
+## methods @var{lm}) fails:
 ## its best fit over its methods and lobe counts has FLIP above FAIL_FLIP,
 ## or that fit's method looks wrong with the fewest lobes and more lobes
 ## lower its FLIP by less than FAIL_FLIP_GAIN.  "method": the fields of
@@ -40,7 +41,7 @@ function S = db_verdicts (c, ok, X, what, m, S)
         S.in_sample_steps = steps_of (c, up_p, X.flip.pov.(rec), X.psnr.pov.(rec));
       endif
     case "fails"
-      S = fails (c, ok, X);
+      S = fails (c, ok, X, m);
     case "method"
       nk = numel (c.lobes);
       best = min (V.(m)(ok,:), [], 2);
@@ -62,15 +63,14 @@ function S = db_verdicts (c, ok, X, what, m, S)
   endswitch
 endfunction
 
-## the materials where the Lafortune model fails, by its best fit
-function out = fails (c, ok, X)
+## the materials where the Lafortune model fails (its methods LM), by its
+## best fit
+function out = fails (c, ok, X, lm)
   V = X.flip.verdict;
   Vp = X.psnr.verdict;
   F = X.flip.pov;
   nk = numel (c.lobes);
   out = {};
-  mp = cellfun (@repro_method, c.methods);
-  lm = c.methods(strcmp ({mp.model}, "lafortune"));      # the Lafortune model's methods
   if (isempty (lm))
     return;
   endif

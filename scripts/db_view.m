@@ -22,10 +22,10 @@ function V = db_view (sm)
   V.kmin = min (lobes);
   V.kmax = max (lobes);
   V.kmin_s = plural (V.kmin);
-  V.kmin_verb = ifelse (V.kmin == 1, "s", "");
+  V.kmin_verb = merge (V.kmin == 1, "s", "");
   V.fig_psnr = repro_files ("fig_psnr_lobes", "", "");
   V.fig_flip = repro_files ("fig_flip_lobes", "", "");
-  V.verdict_short = ifelse (isempty (st.judge), "in-sample FLIP", "held-out FLIP");
+  V.verdict_short = merge (isempty (st.judge), "in-sample FLIP", "held-out FLIP");
   ## the summary across materials, one row per method and lobe count
   V.summary_rows = struct ([]);
   for m = st.methods
@@ -51,7 +51,7 @@ function V = db_view (sm)
   V.rises_verdict = names_rise (sm.flip_rises.verdict_steps);
   V.rises_in_sample = names_rise (sm.flip_rises.in_sample_steps);
   ## where the Lafortune model fails
-  V.has_lafortune = any (arrayfun (@(m) strcmp (repro_method (m{1}).model, "lafortune"), st.methods));
+  V.has_lafortune = ! isempty (sm.lafortune_methods);
   V.has_fails = ! isempty (sm.fails);
   V.n_fails = numel (sm.fails);
   for k = 1:numel (sm.fails)
@@ -98,7 +98,7 @@ function V = models_view (V, sm)
   lobes = sm.settings.lobes;
   V.models_titles = strjoin (cellfun (@(m, t) sprintf ("%s (%s)", m, t), S.models, S.titles,
                                       "uniformoutput", false), ", ");
-  V.metals_or_none = ifelse (isempty (S.metals), "none", strjoin (S.metals, ", "));
+  V.metals_or_none = merge (isempty (S.metals), "none", strjoin (S.metals, ", "));
   V.lobe_heads = struct ("lobes", num2cell (lobes), "lobes_s", arrayfun (@plural, lobes, "uniformoutput", false));
   V.best_rows = struct ([]);
   for b = S.best
@@ -181,9 +181,5 @@ function s = names_val (names, v, fmt)
 endfunction
 
 function s = plural (k)
-  s = ifelse (k == 1, "", "s");
-endfunction
-
-function s = ifelse (c, a, b)
-  if (c) s = a; else s = b; endif
+  s = merge (k == 1, "", "s");
 endfunction

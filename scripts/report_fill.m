@@ -118,7 +118,7 @@ function [inner, rest] = section (s, key)
     if (isempty (tok))
       error ("lafortune:badTemplate", "report_fill: section {{#%s}} is not closed", key);
     endif
-    depth += ifelse (tok{1} == "/", -1, 1);
+    depth += merge (tok{1} == "/", -1, 1);
     if (depth == 0)
       inner = s(1:pos+b-2);
       rest = s(pos+e:end);
@@ -163,7 +163,7 @@ function s = text_of (v, fmt, key)
   elseif (iscellstr (v))
     s = strjoin (v, ", ");
   elseif (islogical (v) && ! isempty (v))
-    s = strjoin (arrayfun (@(x) ifelse (x, "yes", "no"), v(:)', "uniformoutput", false), " / ");
+    s = strjoin (arrayfun (@(x) merge (x, "yes", "no"), v(:)', "uniformoutput", false), " / ");
   elseif (isnumeric (v) || islogical (v))
     c = arrayfun (@(x) sprintf (fmt, x), double (v(:)'), "uniformoutput", false);
     c(isnan (v(:)')) = {"-"};
@@ -176,6 +176,3 @@ function s = text_of (v, fmt, key)
   endif
 endfunction
 
-function s = ifelse (c, a, b)
-  if (c) s = a; else s = b; endif
-endfunction

@@ -37,7 +37,7 @@ function repro_figures ()
   fd = fileparts (repro_files ("figures", c.results, ""));
   repro_mkdir (fd);
   nl = numel (c.lobes);
-  lobe_names = arrayfun (@(k) sprintf ("%d lobe%s", k, ifelse (k > 1, "s", "")), c.lobes,
+  lobe_names = arrayfun (@(k) sprintf ("%d lobe%s", k, merge (k > 1, "s", "")), c.lobes,
                          "uniformoutput", false);
   fits = cell (1, numel (c.materials));
   for i = 1:numel (c.materials)
@@ -153,7 +153,7 @@ function renders_figure (c, mat, ref, file, psnr, ttl, out, paper_on)
   if (paper_on)
     paper(strcmp (mths, "inplane"),:) = repro_paper (c, mat);
   endif
-  names = arrayfun (@(k) sprintf ("%d lobe%s", k, ifelse (k > 1, "s", "")), c.lobes,
+  names = arrayfun (@(k) sprintf ("%d lobe%s", k, merge (k > 1, "s", "")), c.lobes,
                     "uniformoutput", false);
   done (plot_renders (imgs, [{"measured"}, names], P, "paper", paper, "map", "flip",
                       "rows", cellfun (@row_name, mths, "uniformoutput", false),

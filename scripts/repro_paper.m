@@ -9,7 +9,7 @@
 ## @end deftypefn
 function p = repro_paper (c, material)
   p = nan (1, numel (c.lobes));
-  key = strrep (material, "-", "_");
+  key = repro_field (material);
   if (isfield (c.paper_psnr, key))
     v = c.paper_psnr.(key);
     have = c.lobes <= numel (v);

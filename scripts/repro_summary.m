@@ -33,13 +33,14 @@ function sm = repro_summary (c)
     else
       what = "the toolbox's built-in stand-in (a Cook–Torrance model with the parameters Ngan et al. 2005 published for this material, in MERL format with 3% noise and missing grazing samples), not the measurement";
     endif
-    sm.data.(fieldname (mat)) = struct ("kind", src.kind, "path", src.path, "sha256", src.sha256, "what", what);
+    sm.data.(repro_field (mat)) = struct ("kind", src.kind, "path", src.path, "sha256", src.sha256, "what", what);
   endfor
   sm.materials = struct ();
+  rec = cellfun (@(m) records (c, m), c.materials, "uniformoutput", false);
   for i = 1:numel (c.materials)
-    sm.materials.(fieldname (c.materials{i})) = material (c, c.materials{i});
+    sm.materials.(repro_field (c.materials{i})) = material (c, c.materials{i}, rec{i});
   endfor
-  [sm.heldout, sm.best_model, sm.models] = verdicts (c);
+  [sm.heldout, sm.best_model, sm.models] = verdicts (c, rec);
   scene = repro_scene (c);
   sm.settings = struct ("scene", scene.name, "width", scene.width, "height", scene.height,
                         "spp", scene.spp, "pov_antialias", c.pov_aa, "max_angle", c.max_angle,
@@ -52,18 +53,26 @@ function sm = repro_summary (c)
   if (c.study)
     for i = 1:numel (c.materials)
       R = jsondecode (fileread (repro_files ("study", c.results, c.materials{i})));
-      sm.study.(fieldname (c.materials{i})) = struct ("light_b", R.light_b(:)', "methods", R.methods);
+      sm.study.(repro_field (c.materials{i})) = struct ("light_b", R.light_b(:)', "methods", R.methods);
     endfor
   endif
 endfunction
 
-## one material's numbers, from its records
-function s = material (c, mat)
-  R = jsondecode (fileread (repro_files ("render_fits", c.results, mat)));
-  F = jsondecode (fileread (repro_files ("fit", c.results, mat)));
-  P = jsondecode (fileread (repro_files ("spp", c.results, mat)));
-  J = jsondecode (fileread (repro_files ("judge", c.results, mat)));
-  M = jsondecode (fileread (repro_files ("render_measured", c.results, mat)));
+## the records of material MAT's steps, each read once
+function r = records (c, mat)
+  r = struct ();
+  for s = {"render_fits", "fit", "spp", "judge", "render_measured"}
+    r.(s{1}) = jsondecode (fileread (repro_files (s{1}, c.results, mat)));
+  endfor
+endfunction
+
+## material MAT's numbers, from its records REC
+function s = material (c, mat, rec)
+  R = rec.render_fits;
+  F = rec.fit;
+  P = rec.spp;
+  J = rec.judge;
+  M = rec.render_measured;
   nk = numel (c.lobes);
   s = struct ();
   s.paper_psnr = repro_paper (c, mat);
@@ -143,8 +152,8 @@ endfunction
 ## per material and lobe count, the method with the lowest held-out FLIP,
 ## and the models compared on the verdicts' FLIP (held out, or in-sample
 ## without held-out lights): the best of each model over the methods
-## (repro_models) and the best model
-function [H, S, MD] = verdicts (c)
+## (repro_models) and the best model (REC: each material's records)
+function [H, S, MD] = verdicts (c, rec)
   mats = c.materials;
   nk = numel (c.lobes);
   H = struct ("lights", {{c.judge.label}}, "best_method", struct ());
@@ -154,8 +163,8 @@ function [H, S, MD] = verdicts (c)
     F.(m{1}) = nan (numel (mats), nk);
   endfor
   for i = 1:numel (mats)
-    J = jsondecode (fileread (repro_files ("judge", c.results, mats{i})));
-    R = jsondecode (fileread (repro_files ("render_fits", c.results, mats{i})));
+    J = rec{i}.judge;
+    R = rec{i}.render_fits;
     best = repmat ({""}, 1, nk);
     bf = Inf (1, nk);
     for m = c.methods
@@ -172,17 +181,13 @@ function [H, S, MD] = verdicts (c)
       endif
     endfor
     if (held)
-      H.best_method.(fieldname (mats{i})) = struct ("method", {best}, "flip", bf);
+      H.best_method.(repro_field (mats{i})) = struct ("method", {best}, "flip", bf);
     endif
   endfor
   [M, B] = repro_models (c, F);
   S = struct ();
   for i = 1:numel (mats)
-    S.(fieldname (mats{i})) = struct ("model", {B.model(i,:)}, "method", {B.method(i,:)}, "flip", B.flip(i,:));
+    S.(repro_field (mats{i})) = struct ("model", {B.model(i,:)}, "method", {B.method(i,:)}, "flip", B.flip(i,:));
   endfor
   MD = struct ("model", {M.model}, "flip", {M.flip}, "method", {M.method});
-endfunction
-
-function f = fieldname (mat)
-  f = strrep (mat, "-", "_");
 endfunction

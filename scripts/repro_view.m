@@ -15,7 +15,7 @@ function V = repro_view (sm, c)
   st = sm.settings;
   mats = c.materials;
   nk = numel (c.lobes);
-  V.run = ifelse (st.quick, "QUICK (classroom)", "full");
+  V.run = merge (st.quick, "QUICK (classroom)", "full");
   V.scene_desc = st.mesh;
   if (isempty (st.mesh))
     V.scene_desc = sprintf ("the built-in scene '%s'; give MESH=happy_vrip.ply for the paper's Happy Buddha", st.scene_name);
@@ -24,7 +24,7 @@ function V = repro_view (sm, c)
   V.material_names = struct ("material", mats, "words", strrep (mats, "-", " "),
                              "first_light", {""});
   for i = 1:numel (mats)
-    d = sm.data.(fieldname (mats{i}));
+    d = sm.data.(repro_field (mats{i}));
     V.data_rows{end+1} = struct ("material", mats{i}, "file", strcmp (d.kind, "merl-file"), "path", d.path,
                                  "sha", d.sha256(1:min (12, end)), "what", d.what);
   endfor
@@ -34,7 +34,7 @@ function V = repro_view (sm, c)
   V.psnr_rows = {};
   V.fit_rows = {};
   for i = 1:numel (mats)
-    s = sm.materials.(fieldname (mats{i}));
+    s = sm.materials.(repro_field (mats{i}));
     for j = 1:nk
       paper = "-";
       if (! isnan (s.paper_psnr(j)))
@@ -62,7 +62,7 @@ function V = repro_view (sm, c)
       endfor
     endfor
   endfor
-  V.measured_agree = strjoin (cellfun (@(m) sprintf ("%.1f dB (%s)", sm.materials.(fieldname (m)).renderers_psnr_measured, m),
+  V.measured_agree = strjoin (cellfun (@(m) sprintf ("%.1f dB (%s)", sm.materials.(repro_field (m)).renderers_psnr_measured, m),
                                        mats, "uniformoutput", false), ", ");
   V = heldout_view (V, sm, c);
   V = fits_view (V, sm, c, others);
@@ -74,25 +74,25 @@ function V = heldout_view (V, sm, c)
   mats = c.materials;
   V.has_judge = ! isempty (c.judge);
   V.lights_list = strjoin (sm.heldout.lights, ", ");
-  V.judge_spp_s = ifelse (c.judge_spp == 1, "", "s");
+  V.judge_spp_s = merge (c.judge_spp == 1, "", "s");
   if (V.has_judge)
     [V.material_names.first_light] = deal (c.judge(1).label);
   endif
   V.best_method_rows = {};
   if (V.has_judge)
     for i = 1:numel (mats)
-      b = sm.heldout.best_method.(fieldname (mats{i}));
-      t = arrayfun (@(j) sprintf ("%d lobe%s: %s (%.4f)", c.lobes(j), ifelse (c.lobes(j) > 1, "s", ""),
+      b = sm.heldout.best_method.(repro_field (mats{i}));
+      t = arrayfun (@(j) sprintf ("%d lobe%s: %s (%.4f)", c.lobes(j), merge (c.lobes(j) > 1, "s", ""),
                                   b.method{j}, b.flip(j)), 1:numel (c.lobes), "uniformoutput", false);
       V.best_method_rows{end+1} = struct ("material", mats{i}, "text", strjoin (t, "; "));
     endfor
   endif
   V.models_list = strjoin ({sm.models.model}, ", ");
-  V.judged_by = ifelse (V.has_judge, "the mean FLIP under the held-out lights (JUDGE)",
+  V.judged_by = merge (V.has_judge, "the mean FLIP under the held-out lights (JUDGE)",
                         "the in-sample FLIP of their POV-Ray renders (JUDGE is empty)");
   V.model_rows = {};
   for i = 1:numel (mats)
-    B = sm.best_model.(fieldname (mats{i}));
+    B = sm.best_model.(repro_field (mats{i}));
     for j = 1:numel (c.lobes)
       cells = arrayfun (@(M) struct ("flip", M.flip(i,j), "method", M.method{i,j}), sm.models);
       V.model_rows{end+1} = struct ("material", mats{i}, "lobes", c.lobes(j), "cells", cells,
@@ -106,10 +106,10 @@ function V = fits_view (V, sm, c, others)
   mats = c.materials;
   V.study_rows = {};
   for i = 1:numel (mats)
-    if (! isfield (sm.study, fieldname (mats{i})))
+    if (! isfield (sm.study, repro_field (mats{i})))
       continue;
     endif
-    R = sm.study.(fieldname (mats{i}));
+    R = sm.study.(repro_field (mats{i}));
     nl = max (c.lobes);
     rows = {};
     for m = R.methods(:)'
@@ -129,7 +129,7 @@ function V = fits_view (V, sm, c, others)
   V.otables = tables(! strcmp (tables, "inplane"));
   V.error_rows = {};
   for i = 1:numel (mats)
-    s = sm.materials.(fieldname (mats{i}));
+    s = sm.materials.(repro_field (mats{i}));
     for m = c.methods
       e = s.errors.(m{1});
       for j = 1:numel (c.lobes)
@@ -156,7 +156,7 @@ function V = times_view (V, sm, c)
   chn = {"R", "G", "B"};
   V.trace_rows = V.spp_rows = V.env_rows = V.time_rows = {};
   for i = 1:numel (mats)
-    s = sm.materials.(fieldname (mats{i}));
+    s = sm.materials.(repro_field (mats{i}));
     for ch = 1:3
       t = s.trace(ch);
       V.trace_rows{end+1} = struct ("material", mats{i}, "channel", chn{ch}, "final", t.final, "t10", t.t10,
@@ -178,15 +178,7 @@ function V = times_view (V, sm, c)
                                  "material_bytes", s.material_bytes, "render_time_pov", s.render_time_pov,
                                  "render_time_rt", s.render_time_rt);
   endfor
-  s1 = sm.materials.(fieldname (mats{1}));
+  s1 = sm.materials.(repro_field (mats{1}));
   V.env_map = s1.env_map;
   V.env_reference = s1.env_reference;
-endfunction
-
-function f = fieldname (mat)
-  f = strrep (mat, "-", "_");
-endfunction
-
-function s = ifelse (c, a, b)
-  if (c) s = a; else s = b; endif
 endfunction

@@ -20,10 +20,6 @@
 ## OUTDIR/NAME.log, OUTDIR/NAME.res per file and OUTDIR/done last.
 
 1;
-function s = ifelse_str (c, a, b)
-  if (c) s = a; else s = b; endif
-endfunction
-
 ## run one test file: its counts [n nmax nxfail nbug nskip nrtskip] and time
 function [r, t] = run_file (name, log)
   fid = fopen (log, "w");
@@ -50,7 +46,7 @@ function [passed, failed, skipped, bad] = tally (short, r, t, txt, passed, faile
   passed += r(1);
   failed += nfail;
   skipped += r(5) + r(6);
-  printf ("%-4s %-22s %3d/%-3d %6.1f s\n", ifelse_str (nfail == 0, "ok", "FAIL"), short,
+  printf ("%-4s %-22s %3d/%-3d %6.1f s\n", merge (nfail == 0, "ok", "FAIL"), short,
           r(1), r(2), t);
   fflush (stdout);
   if (nfail > 0)
