@@ -362,3 +362,33 @@
 %! [p, s] = __rt_accum__ (3, 0, int32 (2), [1 2 3], [true; false; true], [0.5 0 0]);
 %! assert (p, [1; 2; 3]);
 %! assert (s, [0.5 0 0; 1 2 3; 0.5 0 0]);
+
+%!test
+%! ## a damaged __rt_accum__ ahead on the path: one warning
+%! ## lafortune:noOctFile naming rt_render, then add_samples's Octave
+%! ## arithmetic, the same image; in a fresh octave-cli
+%! m = struct ("rho_d", [0.3 0.2 0.1], "Cxy", [-0.8 -0.8 -0.8], "Cz", [0.7 0.7 0.7], "e", [20 20 20]);
+%! sc = scene_make ("sphere", "size", [6 4]);
+%! a = rt_render (sc, m, "progress", false);
+%! junk = tempname (); mkdir (junk);
+%! scr = [tempname() ".m"];
+%! unwind_protect
+%!   fid = fopen (fullfile (junk, "__rt_accum__.oct"), "w");
+%!   fwrite (fid, uint8 (1:100)); fclose (fid);
+%!   fid = fopen (scr, "w");
+%!   fprintf (fid, "path ('%s'); addpath ('%s');\n", path (), junk);
+%!   fprintf (fid, "m = struct ('rho_d', [0.3 0.2 0.1], 'Cxy', [-0.8 -0.8 -0.8], 'Cz', [0.7 0.7 0.7], 'e', [20 20 20]);\n");
+%!   fprintf (fid, "a = %s;\n", mat2str (a(:)', 17));
+%!   fprintf (fid, "sc = scene_make ('sphere', 'size', [6 4]);\n");
+%!   fprintf (fid, "g1 = rt_render (sc, m, 'progress', false); g2 = rt_render (sc, m, 'progress', false);\n");
+%!   fprintf (fid, "[~, id] = lastwarn (); printf ('same %%d %%d, %%s\\n', isequal (g1(:)', a), isequal (g2(:)', a), id);\n");
+%!   fclose (fid);
+%!   [st, out] = system (sprintf ("octave-cli --no-gui --norc --no-history '%s' 2>&1", scr));
+%! unwind_protect_cleanup
+%!   unlink (scr);
+%!   confirm_recursive_rmdir (false, "local");
+%!   rmdir (junk, "s");
+%! end_unwind_protect
+%! assert (st == 0, "%s", out);
+%! assert (! isempty (strfind (out, "same 1 1, lafortune:noOctFile")), out);
+%! assert (numel (strfind (out, "rt_render: the oct-file __rt_accum__ does not work")) == 1, "%s", out);

@@ -440,21 +440,11 @@ endfunction
 ## The oct-file __rt_accum__ makes the same sums, compiled, when it is
 ## built; this code is the definition and the reference
 function acc = add_samples (acc, k0, lith, rad, miss, bg)
-  persistent broken = false;
-  if (! broken && exist ("__rt_accum__", "file") == 3)
-    try
-      [p, s] = __rt_accum__ (rows (acc), k0, int32 (lith), rad, logical (miss), bg);
-      acc(p,:) += s;
-      return;
-    catch err
-      if (strncmp (err.identifier, "lafortune:", 10))
-        rethrow (err);
-      endif
-      broken = true;
-      warning ("lafortune:noOctFile",
-               "rt_render: the oct-file __rt_accum__ does not work (%s); using the Octave arithmetic (rebuild it: make -C src)",
-               err.message);
-    end_try_catch
+  [done, p, s] = oct_call ("__rt_accum__", "rt_render", rows (acc), k0, int32 (lith), rad,
+                           logical (miss), bg);
+  if (done)
+    acc(p,:) += s;
+    return;
   endif
   npix = rows (acc);
   pix = mod (k0 + (0:numel (miss)-1).', npix) + 1;

@@ -12,20 +12,8 @@
 ## raises the warning @code{lafortune:noOctFile} once.
 ## @end deftypefn
 function f = model_value (def, p, X)
-  persistent broken = false;
-  if (! broken && exist ("__model_core__", "file") == 3)
-    try
-      f = __model_core__ (def.type, p, X);
-      return;
-    catch err
-      if (strncmp (err.identifier, "lafortune:", 10))
-        rethrow (err);
-      endif
-      broken = true;
-      warning ("lafortune:noOctFile",
-               "model_value: the oct-file __model_core__ does not work (%s); using the Octave arithmetic (rebuild it: make -C src)",
-               err.message);
-    end_try_catch
+  [done, f] = oct_call ("__model_core__", "model_value", def.type, p, X);
+  if (! done)
+    f = __lafortune_model_core__ (def, p, X);
   endif
-  f = __lafortune_model_core__ (def, p, X);
 endfunction
