@@ -35,6 +35,26 @@
 %!  assert (exist (oct, "file"), 3);
 %!endfunction
 
+%!function [st, out] = __with_damaged (oct, lines)
+%!  ## run LINES (a cell of Octave statements) in a fresh octave-cli with
+%!  ## this path and a damaged oct-file OCT ahead of it
+%!  junk = tempname (); mkdir (junk);
+%!  scr = [tempname() ".m"];
+%!  unwind_protect
+%!    fid = fopen (fullfile (junk, [oct ".oct"]), "w");
+%!    fwrite (fid, uint8 (1:100)); fclose (fid);
+%!    fid = fopen (scr, "w");
+%!    fprintf (fid, "path ('%s'); addpath ('%s');\n", path (), junk);
+%!    fprintf (fid, "%s\n", lines{:});
+%!    fclose (fid);
+%!    [st, out] = system (sprintf ("octave-cli --no-gui --norc --no-history '%s' 2>&1", scr));
+%!  unwind_protect_cleanup
+%!    unlink (scr);
+%!    confirm_recursive_rmdir (false, "local");
+%!    rmdir (junk, "s");
+%!  end_unwind_protect
+%!endfunction
+
 %!function [wi, wo] = __dirs (n)
 %!  ## N direction pairs over the hemisphere, deterministic
 %!  t = (1:n)' / (n + 1);
@@ -245,26 +265,12 @@
 %! m = struct ("rho_d", [0.1 0.2 0.3], "Cxy", [-1 -0.9 -1.1], "Cz", [1 0.8 0.95], "e", [10 20 5]);
 %! [wi, wo] = __dirs (50);
 %! f = lafortune_eval (m, wi, wo);
-%! junk = tempname (); mkdir (junk);
-%! scr = [tempname() ".m"];
-%! unwind_protect
-%!   fid = fopen (fullfile (junk, "__lafortune_core__.oct"), "w");
-%!   fwrite (fid, uint8 (1:100)); fclose (fid);
-%!   fid = fopen (scr, "w");
-%!   fprintf (fid, "addpath ('%s'); addpath ('%s'); addpath ('%s');\n",
-%!            fileparts (which ("__lafortune_core__")), fileparts (which ("lafortune_eval")), junk);
-%!   fprintf (fid, "m = struct ('rho_d', %s, 'Cxy', %s, 'Cz', %s, 'e', %s);\n",
-%!            mat2str (m.rho_d, 17), mat2str (m.Cxy, 17), mat2str (m.Cz, 17), mat2str (m.e, 17));
-%!   fprintf (fid, "wi = %s; wo = %s; f = %s;\n", mat2str (wi, 17), mat2str (wo, 17), mat2str (f, 17));
-%!   fprintf (fid, "g1 = lafortune_eval (m, wi, wo); g2 = lafortune_eval (m, wi, wo);\n");
-%!   fprintf (fid, "[~, id] = lastwarn (); printf ('same %%d %%d, %%s\\n', isequal (g1, f), isequal (g2, f), id);\n");
-%!   fclose (fid);
-%!   [st, out] = system (sprintf ("octave-cli --no-gui --norc --no-history '%s' 2>&1", scr));
-%! unwind_protect_cleanup
-%!   unlink (scr);
-%!   confirm_recursive_rmdir (false, "local");
-%!   rmdir (junk, "s");
-%! end_unwind_protect
+%! [st, out] = __with_damaged ("__lafortune_core__", {
+%!   sprintf("m = struct ('rho_d', %s, 'Cxy', %s, 'Cz', %s, 'e', %s);",
+%!           mat2str (m.rho_d, 17), mat2str (m.Cxy, 17), mat2str (m.Cz, 17), mat2str (m.e, 17)),
+%!   sprintf("wi = %s; wo = %s; f = %s;", mat2str (wi, 17), mat2str (wo, 17), mat2str (f, 17)),
+%!   "g1 = lafortune_eval (m, wi, wo); g2 = lafortune_eval (m, wi, wo);",
+%!   "[~, id] = lastwarn (); printf ('same %d %d, %s\\n', isequal (g1, f), isequal (g2, f), id);"});
 %! assert (st == 0, "%s", out);
 %! assert (! isempty (strfind (out, "same 1 1, lafortune:noOctFile")), out);
 %! assert (numel (strfind (out, "does not work")) == 1, "%s", out);
@@ -370,25 +376,12 @@
 %! m = struct ("rho_d", [0.3 0.2 0.1], "Cxy", [-0.8 -0.8 -0.8], "Cz", [0.7 0.7 0.7], "e", [20 20 20]);
 %! sc = scene_make ("sphere", "size", [6 4]);
 %! a = rt_render (sc, m, "progress", false);
-%! junk = tempname (); mkdir (junk);
-%! scr = [tempname() ".m"];
-%! unwind_protect
-%!   fid = fopen (fullfile (junk, "__rt_accum__.oct"), "w");
-%!   fwrite (fid, uint8 (1:100)); fclose (fid);
-%!   fid = fopen (scr, "w");
-%!   fprintf (fid, "path ('%s'); addpath ('%s');\n", path (), junk);
-%!   fprintf (fid, "m = struct ('rho_d', [0.3 0.2 0.1], 'Cxy', [-0.8 -0.8 -0.8], 'Cz', [0.7 0.7 0.7], 'e', [20 20 20]);\n");
-%!   fprintf (fid, "a = %s;\n", mat2str (a(:)', 17));
-%!   fprintf (fid, "sc = scene_make ('sphere', 'size', [6 4]);\n");
-%!   fprintf (fid, "g1 = rt_render (sc, m, 'progress', false); g2 = rt_render (sc, m, 'progress', false);\n");
-%!   fprintf (fid, "[~, id] = lastwarn (); printf ('same %%d %%d, %%s\\n', isequal (g1(:)', a), isequal (g2(:)', a), id);\n");
-%!   fclose (fid);
-%!   [st, out] = system (sprintf ("octave-cli --no-gui --norc --no-history '%s' 2>&1", scr));
-%! unwind_protect_cleanup
-%!   unlink (scr);
-%!   confirm_recursive_rmdir (false, "local");
-%!   rmdir (junk, "s");
-%! end_unwind_protect
+%! [st, out] = __with_damaged ("__rt_accum__", {
+%!   "m = struct ('rho_d', [0.3 0.2 0.1], 'Cxy', [-0.8 -0.8 -0.8], 'Cz', [0.7 0.7 0.7], 'e', [20 20 20]);",
+%!   sprintf("a = %s;", mat2str (a(:)', 17)),
+%!   "sc = scene_make ('sphere', 'size', [6 4]);",
+%!   "g1 = rt_render (sc, m, 'progress', false); g2 = rt_render (sc, m, 'progress', false);",
+%!   "[~, id] = lastwarn (); printf ('same %d %d, %s\\n', isequal (g1(:)', a), isequal (g2(:)', a), id);"});
 %! assert (st == 0, "%s", out);
 %! assert (! isempty (strfind (out, "same 1 1, lafortune:noOctFile")), out);
 %! assert (numel (strfind (out, "rt_render: the oct-file __rt_accum__ does not work")) == 1, "%s", out);
