@@ -11,8 +11,9 @@
 ## models.  The same for pov_knots's greedy refinement of one table, which
 ## calls the oct-file __pov_knots__ when it is built: the entries it chooses
 ## on random tables (ties, NaN, masks) and whole POV-Ray scene files.  And
-## rt_render's sums of the samples into the pixels (__rt_accum__): whole
-## renders and renders from the trace cache.
+## rt_render's sums of the samples into the pixels (__rt_accum__) and its
+## shading from the slice table (__rt_slice__): whole renders and renders
+## from the trace cache.
 
 %!function varargout = __octave_engine (fn, oct = "__lafortune_core__")
 %!  ## FN () with the oct-file OCT off the path
@@ -329,8 +330,9 @@
 
 %!test
 %! ## rt_render's sums of the samples into the pixels (add_samples, which
-%! ## calls the oct-file __rt_accum__ when it is built): whole renders and
-%! ## renders from the trace cache, bit for bit without the oct-file, in
+%! ## calls the oct-file __rt_accum__ when it is built) and its shading from
+%! ## the slice table (slice_rad, __rt_slice__): whole renders and renders
+%! ## from the trace cache, bit for bit without the oct-files, in
 %! ## slice mode and lights mode, with a black and a coloured background,
 %! ## chunks holding a pixel several times (chunk > pixels), and a last
 %! ## chunk of one sample
@@ -356,6 +358,18 @@
 %!   assert (nnz (a) > 0);
 %! endfor
 
+%!test
+%! ## the slice table's radiance: single-precision interpolation, then times
+%! ## cos ti in double, as slice_lookup
+%! Rm = single (reshape (1:24, 8, 3) / 7);
+%! a = single ([0.25; 0.5]); b = single ([0.75; 0]); k = int32 ([1; 2]); nh = 4; cosi = [0.5; 0.9];
+%! v = ((1 - a) .* (1 - b)) .* Rm(k,:) + (a .* (1 - b)) .* Rm(k+1,:) ...
+%!     + ((1 - a) .* b) .* Rm(k+nh,:) + (a .* b) .* Rm(k+nh+1,:);
+%! assert (__same_bits (__rt_slice__ (Rm, a, b, k, nh, cosi), double (v) .* cosi));
+%!error <RM must be> __rt_slice__ (ones (8, 3), single (0), single (0), int32 (1), 4, 1)
+%!error <K must be int32> __rt_slice__ (single (ones (8, 3)), single (0), single (0), 1, 4, 1)
+%!error <K must index> __rt_slice__ (single (ones (8, 3)), single (0), single (0), int32 (4), 4, 1)
+%!error <COSI must be> __rt_slice__ (single (ones (8, 3)), single (0), single (0), int32 (1), 4, [1 2])
 %!error <NPIX must be> __rt_accum__ (0, 0, int32 (1), [1 2 3], false, [0 0 0])
 %!error <LITH must be int32> __rt_accum__ (4, 0, 1, [1 2 3], false, [0 0 0])
 %!error <RAD must be> __rt_accum__ (4, 0, int32 (1), [1 2], false, [0 0 0])

@@ -352,7 +352,7 @@ function [img, info, cache] = rt_render (scene, material, varargin)
         endif
       endif
       if (strcmp (mode, "slice"))
-        rad = double (slice_lookup (Rm, Tc.w)) .* Tc.cosi;
+        rad = slice_rad (Rm, Tc.w, Tc.cosi);
         lith = Tc.h;
         miss = Tc.miss;
       else
@@ -505,6 +505,17 @@ function w = slice_weights (sl, N)
   i0 = min (floor (fi), nh - 2);
   j0 = min (floor (fj), np - 2);
   w = struct ("a", single (fi - i0), "b", single (fj - j0), "k", int32 (i0 + 1 + j0 * nh), "nh", nh);
+endfunction
+
+## the radiance of lit samples from the slice table RM: the table
+## interpolated with their weights W (slice_weights), times cos ti, COSI.
+## The oct-file __rt_slice__ makes the same operations, compiled, when it
+## is built; this code is the definition and the reference
+function rad = slice_rad (Rm, w, cosi)
+  [done, rad] = oct_call ("__rt_slice__", "rt_render", Rm, w.a, w.b, w.k, w.nh, cosi);
+  if (! done)
+    rad = double (slice_lookup (Rm, w)) .* cosi;
+  endif
 endfunction
 
 ## the table RM interpolated with the weights W of slice_weights

@@ -1,0 +1,101 @@
+// Copyright (C) 2026 The lafortune developers
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// __rt_slice__: rt_render's shading of lit samples from the slice table
+// (its subfunction slice_rad: the table interpolated bilinearly with the
+// samples' weights, slice_lookup, in single precision, then times cos ti in
+// double), compiled.  A render from the trace cache in slice mode spends
+// about half its time there.  slice_rad stays the definition and the
+// reference: it calls this when it is built, and the tests compare the two
+// bit for bit.  Every operation is the one the Octave code makes, in its
+// order and precision (single for the interpolation, as Octave's single
+// arithmetic; built with -ffp-contract=off, src/Makefile).
+
+#include <octave/oct.h>
+
+#include "oct_guard.h"
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+namespace
+{
+  std::string
+  what_of (const octave_value& v)
+  {
+    const dim_vector d = v.dims ();
+    return d.str () + " " + (v.iscomplex () ? "complex " : "") + v.class_name ();
+  }
+}
+
+DEFUN_DLD (__rt_slice__, args, ,
+           "-*- texinfo -*-\n\
+@deftypefn {} {@var{rad} =} __rt_slice__ (@var{Rm}, @var{a}, @var{b}, @var{k}, @var{nh}, @var{cosi})\n\
+Internal: the compiled radiance of rt_render's private @code{slice_rad} (see\n\
+there): the slice table @var{Rm} (single, rows x 3) interpolated with the\n\
+weights @var{a}, @var{b} (single) at the entries @var{k} (int32, 1-based),\n\
+@var{k}+1, @var{k}+@var{nh}, @var{k}+@var{nh}+1, in single precision, then\n\
+as double times @var{cosi} (double).  @var{rad} is numel (@var{k}) x 3.\n\
+@end deftypefn")
+{
+  if (args.length () != 6)
+    print_usage ();
+  const octave_value& Rv = args(0);
+  if (! Rv.is_single_type () || Rv.iscomplex () || Rv.ndims () != 2 || Rv.columns () != 3)
+    error_with_id ("lafortune:badInput", "__rt_slice__: RM must be rows x 3 real singles, got %s",
+                   what_of (Rv).c_str ());
+  const octave_idx_type m = args(3).numel ();
+  if (! args(1).is_single_type () || ! args(2).is_single_type () || args(1).iscomplex ()
+      || args(2).iscomplex () || args(1).numel () != m || args(2).numel () != m)
+    error_with_id ("lafortune:badInput", "__rt_slice__: A and B must be real singles, one per entry of K");
+  if (! args(3).is_int32_type ())
+    error_with_id ("lafortune:badInput", "__rt_slice__: K must be int32, got %s",
+                   what_of (args(3)).c_str ());
+  if (! args(4).is_real_scalar ())
+    error_with_id ("lafortune:badInput", "__rt_slice__: NH must be a real scalar");
+  const octave_value& cv = args(5);
+  if (! cv.is_double_type () || cv.iscomplex () || cv.numel () != m)
+    error_with_id ("lafortune:badInput", "__rt_slice__: COSI must be real doubles, one per entry of K, got %s",
+                   what_of (cv).c_str ());
+
+  Matrix rad (m, 3);
+  oct_guard ("__rt_slice__", [&] ()
+    {
+      const FloatMatrix Rm = Rv.float_matrix_value ();
+      const FloatNDArray a = args(1).float_array_value ();
+      const FloatNDArray b = args(2).float_array_value ();
+      const int32NDArray k = args(3).int32_array_value ();
+      const double nhd = args(4).double_value ();
+      const NDArray cosi = cv.array_value ();
+      const octave_idx_type nr = Rm.rows ();
+      if (! (nhd >= 0 && nhd < nr && nhd == static_cast<double> (static_cast<octave_idx_type> (nhd))))
+        throw std::invalid_argument ("NH must be an integer between 0 and rows (RM)");
+      const octave_idx_type nh = static_cast<octave_idx_type> (nhd);
+      const float *R = Rm.data ();
+      double *out = rad.fortran_vec ();
+      for (octave_idx_type i = 0; i < m; i++)
+        {
+          const octave_idx_type k0 = static_cast<octave_idx_type> (k(i).value ()) - 1;
+          if (k0 < 0 || k0 + nh + 1 >= nr)
+            throw std::invalid_argument ("K must index the table's entries (K + NH + 1 <= rows (RM))");
+          const float ai = a(i);
+          const float bi = b(i);
+          // the weights as slice_lookup forms them: ((1 - a) .* (1 - b)), ...
+          const float w00 = (1.0f - ai) * (1.0f - bi);
+          const float w10 = ai * (1.0f - bi);
+          const float w01 = (1.0f - ai) * bi;
+          const float w11 = ai * bi;
+          for (int c = 0; c < 3; c++)
+            {
+              const float *Rc = R + c * nr;
+              float v = w00 * Rc[k0];
+              v = v + w10 * Rc[k0 + 1];
+              v = v + w01 * Rc[k0 + nh];
+              v = v + w11 * Rc[k0 + nh + 1];
+              out[i + c * m] = static_cast<double> (v) * cosi(i);
+            }
+        }
+    });
+  return ovl (rad);
+}
