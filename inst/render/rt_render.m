@@ -588,7 +588,8 @@ endfunction
 %! sb = sc; sb.background = [0.1 0.2 0.3];
 %! [~, ~, Cb] = rt_render (sb, lam, "progress", false);
 %! assert (isequal (rt_render (sb, m, "cache", Cb, "progress", false), rt_render (sb, m, "progress", false)));
-%! ## a last chunk of one sample (a miss, and a hit), traced and from the cache
+%! ## a last chunk of one sample (chunk 47 of 48 samples: a miss) and of
+%! ## two (chunk 23), traced and from the cache
 %! sq = scene_make ("sphere", "size", [6 4]);
 %! sq.spp = 2;
 %! for ch = [47 23]
