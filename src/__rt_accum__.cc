@@ -170,3 +170,19 @@ their first sample), @var{s} (numel (@var{p}) x 3) each one's sum.\n\
     });
   return ovl (pix, sums);
 }
+
+/*
+%!error <Invalid call> __rt_accum__ (1)
+%!error <NPIX must be> __rt_accum__ (0, 0, int32 (1), [1 2 3], false, [0 0 0])
+%!error <LITH must be int32> __rt_accum__ (4, 0, 1, [1 2 3], false, [0 0 0])
+%!error <RAD must be> __rt_accum__ (4, 0, int32 (1), [1 2], false, [0 0 0])
+%!error <LITH must hold sample indices> __rt_accum__ (4, 0, int32 (2), [1 2 3], false, [0 0 0])
+%!test
+%! ## the sums of one chunk: pixels in the order of their first sample
+%! [p, s] = __rt_accum__ (3, 1, int32 ([1; 1; 3; 4]), [1 1 1; 2 2 2; 3 3 3; 4 4 4], false (4, 1), [0 0 0]);
+%! assert (p, [2; 1]);
+%! assert (s, [7 7 7; 3 3 3]);
+%! [p, s] = __rt_accum__ (3, 0, int32 (2), [1 2 3], [true; false; true], [0.5 0 0]);
+%! assert (p, [1; 2; 3]);
+%! assert (s, [0.5 0 0; 1 2 3; 0.5 0 0]);
+*/

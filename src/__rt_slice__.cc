@@ -99,3 +99,19 @@ as double times @var{cosi} (double).  @var{rad} is numel (@var{k}) x 3.\n\
     });
   return ovl (rad);
 }
+
+/*
+%!test
+%! ## the slice table's radiance: single-precision interpolation, then times
+%! ## cos ti in double, as slice_lookup
+%! Rm = single (reshape (1:24, 8, 3) / 7);
+%! a = single ([0.25; 0.5]); b = single ([0.75; 0]); k = int32 ([1; 2]); nh = 4; cosi = [0.5; 0.9];
+%! v = ((1 - a) .* (1 - b)) .* Rm(k,:) + (a .* (1 - b)) .* Rm(k+1,:) ...
+%!     + ((1 - a) .* b) .* Rm(k+nh,:) + (a .* b) .* Rm(k+nh+1,:);
+%! assert (isequal (__rt_slice__ (Rm, a, b, k, nh, cosi), double (v) .* cosi));
+%!error <RM must be> __rt_slice__ (ones (8, 3), single (0), single (0), int32 (1), 4, 1)
+%!error <K must be int32> __rt_slice__ (single (ones (8, 3)), single (0), single (0), 1, 4, 1)
+%!error <K must index> __rt_slice__ (single (ones (8, 3)), single (0), single (0), int32 (4), 4, 1)
+%!error <COSI must be> __rt_slice__ (single (ones (8, 3)), single (0), single (0), int32 (1), 4, [1 2])
+%!error <Invalid call> __rt_slice__ (1)
+*/

@@ -358,30 +358,6 @@
 %!   assert (nnz (a) > 0);
 %! endfor
 
-%!test
-%! ## the slice table's radiance: single-precision interpolation, then times
-%! ## cos ti in double, as slice_lookup
-%! Rm = single (reshape (1:24, 8, 3) / 7);
-%! a = single ([0.25; 0.5]); b = single ([0.75; 0]); k = int32 ([1; 2]); nh = 4; cosi = [0.5; 0.9];
-%! v = ((1 - a) .* (1 - b)) .* Rm(k,:) + (a .* (1 - b)) .* Rm(k+1,:) ...
-%!     + ((1 - a) .* b) .* Rm(k+nh,:) + (a .* b) .* Rm(k+nh+1,:);
-%! assert (__same_bits (__rt_slice__ (Rm, a, b, k, nh, cosi), double (v) .* cosi));
-%!error <RM must be> __rt_slice__ (ones (8, 3), single (0), single (0), int32 (1), 4, 1)
-%!error <K must be int32> __rt_slice__ (single (ones (8, 3)), single (0), single (0), 1, 4, 1)
-%!error <K must index> __rt_slice__ (single (ones (8, 3)), single (0), single (0), int32 (4), 4, 1)
-%!error <COSI must be> __rt_slice__ (single (ones (8, 3)), single (0), single (0), int32 (1), 4, [1 2])
-%!error <NPIX must be> __rt_accum__ (0, 0, int32 (1), [1 2 3], false, [0 0 0])
-%!error <LITH must be int32> __rt_accum__ (4, 0, 1, [1 2 3], false, [0 0 0])
-%!error <RAD must be> __rt_accum__ (4, 0, int32 (1), [1 2], false, [0 0 0])
-%!error <LITH must hold sample indices> __rt_accum__ (4, 0, int32 (2), [1 2 3], false, [0 0 0])
-%!test
-%! ## the sums of one chunk: pixels in the order of their first sample
-%! [p, s] = __rt_accum__ (3, 1, int32 ([1; 1; 3; 4]), [1 1 1; 2 2 2; 3 3 3; 4 4 4], false (4, 1), [0 0 0]);
-%! assert (p, [2; 1]);
-%! assert (s, [7 7 7; 3 3 3]);
-%! [p, s] = __rt_accum__ (3, 0, int32 (2), [1 2 3], [true; false; true], [0.5 0 0]);
-%! assert (p, [1; 2; 3]);
-%! assert (s, [0.5 0 0; 1 2 3; 0.5 0 0]);
 
 %!test
 %! ## a damaged __rt_accum__ ahead on the path: one warning
