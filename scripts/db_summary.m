@@ -26,8 +26,9 @@ function [sm, X] = db_summary (c, D)
   sm.published = published (c, D, ok, X);
   sm.rank_disagreement = disagreement (c, ok, X);
   sm.flip_rises = db_verdicts (c, ok, X, "rises");
+  ## the methods that fit the Lafortune model (its verdicts: fails, db_view)
   mp = cellfun (@repro_method, c.methods);
-  sm.lafortune_methods = c.methods(strcmp ({mp.model}, "lafortune"));   # the Lafortune model's
+  sm.lafortune_methods = c.methods(strcmp ({mp.model}, "lafortune"));
   sm.fails = db_verdicts (c, ok, X, "fails", sm.lafortune_methods);
   for m = c.methods
     sm.methods.(m{1}) = db_verdicts (c, ok, X, "method", m{1}, sm.methods.(m{1}));

@@ -202,7 +202,7 @@ endfunction
 function R = reach_prep (samp)
   [sti, o] = sort (samp(:,1));
   sto = samp(o,2);
-  [Mn, Mx] = minmax_tables (sto, numel (sto));
+  [Mn, Mx] = minmax_tables (sto);
   R = struct ("ti", sti, "to", sto, "Mn", Mn, "Mx", Mx);
 endfunction
 
@@ -222,12 +222,12 @@ function Md = reach_mask (R, ti, to, pad)
 endfunction
 
 ## The tables of range_minmax over X: column k of MN (MX) holds the minima
-## (maxima) of the runs of 2^(k-1) values from each index, for the runs up
-## to L values
-function [Mn, Mx] = minmax_tables (x, L)
+## (maxima) of the runs of 2^(k-1) values from each index, for every run
+## length up to numel (X)
+function [Mn, Mx] = minmax_tables (x)
   x = x(:);
   N = numel (x);
-  [~, e] = log2 (max (L, 1));
+  [~, e] = log2 (max (N, 1));
   Mn = Mx = zeros (N, e);
   Mn(:,1) = Mx(:,1) = x;
   for k = 2:e
