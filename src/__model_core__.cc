@@ -106,18 +106,6 @@ namespace
     return 0;
   }
 
-  // what V is: its size and class, complex or sparse said
-  std::string
-  what_of (const octave_value& v)
-  {
-    std::string c = v.class_name ();
-    if (v.iscomplex ())
-      c = "complex " + c;
-    if (v.issparse ())
-      c = "sparse " + c;
-    return v.dims ().str () + " " + c;
-  }
-
   bool
   type_of (const std::string& s, Type& t, int& nshape)
   {

@@ -26,13 +26,6 @@
 
 namespace
 {
-  std::string
-  what_of (const octave_value& v)
-  {
-    const dim_vector d = v.dims ();
-    return d.str () + " " + (v.iscomplex () ? "complex " : "") + v.class_name ();
-  }
-
   bool
   real_double (const octave_value& v)
   {

@@ -19,16 +19,6 @@
 #include <stdexcept>
 #include <string>
 
-namespace
-{
-  std::string
-  what_of (const octave_value& v)
-  {
-    const dim_vector d = v.dims ();
-    return d.str () + " " + (v.iscomplex () ? "complex " : "") + v.class_name ();
-  }
-}
-
 DEFUN_DLD (__rt_slice__, args, ,
            "-*- texinfo -*-\n\
 @deftypefn {} {@var{rad} =} __rt_slice__ (@var{Rm}, @var{a}, @var{b}, @var{k}, @var{nh}, @var{cosi})\n\

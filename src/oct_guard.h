@@ -6,7 +6,8 @@
 // out of memory becomes the Octave error lafortune:outOfMemory, any other
 // exception lafortune:badInput, with the message "WHO: what went wrong".
 // Shared by the compiled inner loops (__merl_nearest__, __rt_traverse__,
-// __lafortune_core__, __model_core__).
+// __lafortune_core__, __model_core__, __rt_accum__, __rt_slice__), with
+// what_of (V), what an argument is, for their error messages.
 
 #ifndef LAFORTUNE_OCT_GUARD_H
 #define LAFORTUNE_OCT_GUARD_H
@@ -42,6 +43,18 @@ oct_guard (const char *who, F work)
   if (! err.empty ())
     error_with_id (err == "out of memory" ? "lafortune:outOfMemory" : "lafortune:badInput",
                    "%s: %s", who, err.c_str ());
+}
+
+// what V is: its size and class, complex or sparse said
+inline std::string
+what_of (const octave_value& v)
+{
+  std::string c = v.class_name ();
+  if (v.iscomplex ())
+    c = "complex " + c;
+  if (v.issparse ())
+    c = "sparse " + c;
+  return v.dims ().str () + " " + c;
 }
 
 #endif
