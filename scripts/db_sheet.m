@@ -89,15 +89,15 @@ function stops = sheet (c, rec, ref, get, Q, ttl, file)
     name = names{i};
     y = (nm - i) * (ph + tt) / H;
     for j = 0:numel (lobes{i})
-      axes ("position", [j * pw / W + 0.003, y + 0.003, pw / W - 0.006, ph / H - 0.006]);
+      pos = [j * pw / W + 0.003, y + 0.003, pw / W - 0.006, ph / H - 0.006];
       if (j == 0)
-        show (rgb, "measured");
+        show (pos, rgb, "measured");
       else
         img = get (mth, lobes{i}(j));
         r = rec.(mth)(j);
-        show (img_tonemap (img, stops), sprintf ("%s %d: %.1f dB, FLIP %.3f, dE %.1f", name, lobes{i}(j),
-                                                  num (r, Q{1}), num (r, Q{2}),
-                                                  num (r, Q{3})), 8, "normal");
+        show (pos, img_tonemap (img, stops),
+              sprintf ("%s %d: %.1f dB, FLIP %.3f, dE %.1f", name, lobes{i}(j),
+                       num (r, Q{1}), num (r, Q{2}), num (r, Q{3})), 8, "normal");
       endif
     endfor
   endfor
@@ -113,11 +113,19 @@ function x = num (r, f)
   endif
 endfunction
 
-## RGB in the current axes, titled TTL (fit panels: a smaller, regular
-## font, so that PSNR, FLIP and dE fit in the panel's width on one line)
-function show (rgb, ttl, fs = 9, fw = "bold")
-  image (rgb);
-  axis image off;
-  set (gca, "xtick", [], "ytick", []);
-  title (ttl, "interpreter", "none", "fontsize", fs, "fontweight", fw);
+## RGB in new axes at POS (figure units), aspect kept, titled TTL (fit
+## panels: a smaller, regular font, so that PSNR, FLIP and dE fit in the
+## panel's width on one line).  The axes and the image are made with their
+## properties given at once: image () and axis () would reset and restyle
+## the axes for every panel (a third of the sheet's time).
+function show (pos, rgb, ttl, fs = 9, fw = "bold")
+  [h, w, ~] = size (rgb);
+  cl = [0 1];                            # the colour range of RGB's class
+  if (isinteger (rgb))
+    cl = double ([intmin(rgb), intmax(rgb)]);
+  endif
+  ax = axes ("position", pos, "visible", "off", "ydir", "reverse", "clim", cl,
+             "xlim", [0.5, w + 0.5], "ylim", [0.5, h + 0.5], "dataaspectratio", [1 1 1]);
+  image ("cdata", rgb, "cdatamapping", "direct", "parent", ax);
+  title (ax, ttl, "interpreter", "none", "fontsize", fs, "fontweight", fw);
 endfunction
