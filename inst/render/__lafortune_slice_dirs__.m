@@ -12,12 +12,16 @@
 ## and @code{merl_scene}.
 ## @end deftypefn
 function [wi, wo] = __lafortune_slice_dirs__ (ti, to, cg)
-  s = sin (ti) .* sin (to);
-  cphi = (cg - cos (ti) .* cos (to)) ./ s;
+  si = sin (ti);
+  ci = cos (ti);
+  so = sin (to);
+  co = cos (to);
+  s = si .* so;
+  cphi = (cg - ci .* co) ./ s;
   cphi(s <= 0) = 1;
   cphi = min (max (cphi, -1), 1);
   sphi = sqrt (1 - cphi .^ 2);
-  wi = [sin(ti) .* cphi, sin(ti) .* sphi, cos(ti)];
-  wo = [sin(to), zeros(size (to)), cos(to)];
+  wi = [si .* cphi, si .* sphi, ci];
+  wo = [so, zeros(size (to)), co];
   wi ./= sqrt (sum (wi .^ 2, 2));
 endfunction
