@@ -14,6 +14,21 @@ VERSION := $(shell sed -n 's/^Version: *//p' DESCRIPTION)
 TARBALL := lafortune-$(VERSION).tar.gz
 OCTAVE ?= octave-cli
 OCT := $(OCTAVE) --no-gui --norc --no-history
+# the environment of every Octave process started here (the pipeline's, the
+# tests', the benchmarks'): Octave's arithmetic here is one thread working
+# on large temporary arrays.  OpenBLAS's helper threads would spin between
+# its calls (sched_yield), taking a processor from POV-Ray or from the
+# other jobs; glibc's malloc would give each large freed array back to the
+# kernel, which zeroes the pages again for the next one (HACKING.md,
+# "Process environment").  A value set outside make is kept;
+# LAFORTUNE_OWN_ENV names those set here (bench_database runs an older
+# version without them)
+ifeq ($(origin LAFORTUNE_OWN_ENV),undefined)
+LAFORTUNE_OWN_ENV := $(foreach v,OPENBLAS_NUM_THREADS GLIBC_TUNABLES,$(if $(filter undefined,$(origin $(v))),$(v)))
+endif
+OPENBLAS_NUM_THREADS ?= 1
+GLIBC_TUNABLES ?= glibc.malloc.mmap_threshold=33554432:glibc.malloc.trim_threshold=1073741824:glibc.malloc.top_pad=268435456
+export OPENBLAS_NUM_THREADS GLIBC_TUNABLES LAFORTUNE_OWN_ENV
 # the MERL-format stand-ins shipped beside the project (tests, benchmarks)
 MERL_PROXY_DIR ?= $(abspath ../shared/data/merl-proxy)
 export MERL_PROXY_DIR

@@ -13,8 +13,10 @@
 ## taken from the N-job run, where each job has about one core).
 ## Materials: every *.binary in BENCH_MERL_DIR (default: the MERL-format
 ## stand-ins in MERL_PROXY_DIR); settings: the defaults of each version's
-## config.mk, or what BENCH_MAKE_ARGS adds (e.g. "QUICK=1").  BENCH_BASE=none
-## skips the base.  This checkout runs twice: with the held-out judging
+## config.mk, or what BENCH_MAKE_ARGS adds (e.g. "QUICK=1").  Each version
+## runs in the environment its own Makefile sets: the base without the
+## variables this checkout's Makefile sets (LAFORTUNE_OWN_ENV).
+## BENCH_BASE=none skips the base.  This checkout runs twice: with the held-out judging
 ## (JUDGE of config.mk) and without it (JUDGE=), so the judging's cost per
 ## material is measured in the same run.  Beside the stages, their floors:
 ## POV-Ray's own time for the same render with a constant pigment (alone,
@@ -24,10 +26,10 @@
 ##   octave-cli scripts/bench_database.m
 
 1;
-function [wall, S] = run_db (top, merl, jobs, args)
+function [wall, S] = run_db (top, merl, jobs, args, env)
   db = tempname ();
-  cmd = sprintf ("make --no-print-directory -s -C '%s' -j%d database MERL_DIR='%s' DB='%s' %s > '%s.log' 2>&1",
-                 top, jobs, merl, db, args, db);
+  cmd = sprintf ("%smake --no-print-directory -s -C '%s' -j%d database MERL_DIR='%s' DB='%s' %s > '%s.log' 2>&1",
+                 env, top, jobs, merl, db, args, db);
   t0 = tic ();
   st = system (cmd);
   wall = toc (t0);
@@ -133,7 +135,7 @@ printf ("bench_database: %d materials from %s, settings: %s, %d cores\n", n, mer
         merge (isempty (args), "config.mk defaults", args), nproc ());
 ## the versions: this checkout, and the base exported and built in scratch
 V = struct ("name", {"this checkout", "this checkout, JUDGE= (no held-out judging)"}, "top", top,
-            "args", {args, [args " JUDGE="]});
+            "args", {args, [args " JUDGE="]}, "env", "");
 base = getenv ("BENCH_BASE");
 if (isempty (base))
   base = "910a12b";
@@ -153,16 +155,24 @@ unwind_protect
       endif
       error ("bench_database: cannot export and build %s: %s", base, log);
     endif
-    V(end+1) = struct ("name", sprintf ("base %s", base), "top", bt, "args", args);
+    ## the base in the environment its own Makefile sets: without the
+    ## variables this checkout's Makefile set (LAFORTUNE_OWN_ENV)
+    own = strsplit (strtrim (getenv ("LAFORTUNE_OWN_ENV")));
+    own = own(! cellfun (@isempty, own));
+    env = "";
+    if (! isempty (own))
+      env = ["env" sprintf(" -u %s", own{:}) " "];
+    endif
+    V(end+1) = struct ("name", sprintf ("base %s", base), "top", bt, "args", args, "env", env);
   endif
   system (sprintf ("make --no-print-directory -s -C '%s/src' > /dev/null", top));
   for v = 1:numel (V)
     printf ("bench_database: %s, 1 job\n", V(v).name);
     fflush (stdout);
-    [V(v).w1, V(v).S] = run_db (V(v).top, merl, 1, V(v).args);
+    [V(v).w1, V(v).S] = run_db (V(v).top, merl, 1, V(v).args, V(v).env);
     printf ("bench_database: %s, %d jobs\n", V(v).name, jobs);
     fflush (stdout);
-    V(v).wj = run_db (V(v).top, merl, jobs, V(v).args);
+    V(v).wj = run_db (V(v).top, merl, jobs, V(v).args, V(v).env);
   endfor
 unwind_protect_cleanup
   confirm_recursive_rmdir (false, "local");
