@@ -8,12 +8,14 @@
 ## its folder off the path, and values and Jacobians (lafortune_core itself,
 ## called from its private folder; lafortune_eval) and whole fits
 ## (lafortune_fit) are compared bit for bit, on ordinary, stiff and extreme
-## models.  The same for pov_knots's greedy refinement of one table, which
-## calls the oct-file __pov_knots__ when it is built: the entries it chooses
-## on random tables (ties, NaN, masks) and whole POV-Ray scene files.  And
-## rt_render's sums of the samples into the pixels (__rt_accum__) and its
-## shading from the slice table (__rt_slice__): whole renders and renders
-## from the trace cache.
+## models.  The same for pov_knots's refinement of one table and of many at
+## once, which call the oct-files __pov_knots__ and __pov_knots_batch__ when
+## they are built: the entries they choose on random tables (ties, NaN,
+## masks) and whole POV-Ray scene files.  And
+## rt_render's sums of the samples into the pixels (__rt_accum__), its
+## shading from the slice table (__rt_slice__) and its draws from an
+## environment map (__env_sample__): whole renders and renders from the
+## trace cache.
 
 %!function varargout = __octave_engine (fn, oct = "__lafortune_core__")
 %!  ## FN () with the oct-file OCT off the path
@@ -235,6 +237,58 @@
 %! end_unwind_protect
 
 %!test
+%! ## pov_knots (private) on many tables at once (refine_batch): the entries
+%! ## with the oct-file __pov_knots_batch__ and with the Octave code are the
+%! ## same, on smooth, sharp, tied, masked and NaN tables, with room to
+%! ## spare and without (the tables that run out keep their worst intervals,
+%! ## and start again from an even base)
+%! here = pwd ();
+%! state = rand ("state");
+%! unwind_protect
+%!   cd (fullfile (fileparts (which ("pov_render")), "private"));
+%!   rand ("state", 5);
+%!   n = 200;
+%!   x = sort ([0; rand(n - 2, 1); 1]) * pi / 2;
+%!   c = cos (x);
+%!   B = 9;
+%!   G = zeros (n, 2, B);                           # sums of random bumps
+%!   for b = 1:B
+%!     for j = 1:2
+%!       for k = 1:4
+%!         G(:,j,b) += rand () * exp (-((x - 1.5 * rand ()) / (0.02 + 0.3 * rand ())) .^ 2);
+%!       endfor
+%!     endfor
+%!   endfor
+%!   G(:,:,7) = 1;                                  # flat: ties everywhere
+%!   G(:,:,8) = round (4 * G(:,:,8)) / 4;           # steps: repeated values
+%!   G(31,1,9) = NaN;
+%!   M = true (n, 2, B);
+%!   M(1:20,:,2) = false;                           # a table that starts late
+%!   M(:,:,6) = rand (n, 2) > 0.4;
+%!   P = {};
+%!   for tol = [1e-4 1e-2]
+%!     for nmax = [8 12 24 256]
+%!       P(end+1,:) = {tol, nmax};
+%!     endfor
+%!   endfor
+%!   knots = @() cellfun (@(tol, nmax) pov_knots (x, G, c, M, tol, nmax, "adaptive"),
+%!                        P(:,1), P(:,2), "uniformoutput", false);
+%!   K1 = knots ();
+%!   K0 = __octave_engine (knots, "__pov_knots_batch__");
+%!   for r = 1:rows (P)
+%!     assert (size (K1{r}), [n B]);
+%!     assert (isequal (K1{r}, K0{r}), sprintf ("tol %g, nmax %d", P{r,:}));
+%!   endfor
+%!   ## the cases happen: tables at their room, and refined well under it
+%!   cnt = cellfun (@(K) sum (K, 1), K1, "uniformoutput", false);
+%!   assert (sum (cnt{2} == 12) >= 5);
+%!   assert (all (cnt{8}(1:6) > 12 & cnt{8}(1:6) < 256));
+%! unwind_protect_cleanup
+%!   cd (here);
+%!   rand ("state", state);
+%! end_unwind_protect
+
+%!test
 %! ## whole POV-Ray scene files, with and without the oct-files: the same
 %! ## bytes (a fit and a measured material's tables); without them merl_eval
 %! ## warns that it uses its Octave arithmetic, as it should: not shown here
@@ -331,7 +385,8 @@
 %!test
 %! ## rt_render's sums of the samples into the pixels (add_samples, which
 %! ## calls the oct-file __rt_accum__ when it is built) and its shading from
-%! ## the slice table (slice_rad, __rt_slice__): whole renders and renders
+%! ## the slice table (slice_rad, __rt_slice__), and its draws from an
+%! ## environment map (env_sample, __env_sample__): whole renders and renders
 %! ## from the trace cache, bit for bit without the oct-files, in
 %! ## slice mode and lights mode, with a black and a coloured background,
 %! ## chunks holding a pixel several times (chunk > pixels), and a last
@@ -358,6 +413,33 @@
 %!   assert (nnz (a) > 0);
 %! endfor
 
+
+%!test
+%! ## env_sample (private; the oct-file __env_sample__ when it is built) on
+%! ## a light probe (the built-in sky without blender-data) with a rotation:
+%! ## the same directions and weights bit for bit without the oct-file, for
+%! ## random draws, the ends 0 and 1, values outside [0, 1] and NaN, and
+%! ## draws on the CDFs' own values (texel edges)
+%! here = pwd ();
+%! state = rand ("state");
+%! unwind_protect
+%!   warning ("off", "lafortune:noLightProbe", "local");
+%!   s = scene_make ("sphere", "light", "environment", "map", "courtyard", "rotation", 70);
+%!   cd (fullfile (fileparts (which ("rt_render")), "private"));
+%!   D = env_dist (s.light);
+%!   rand ("state", 11);
+%!   r = D.cdf_row(1 + floor (rand (50, 1) * D.H));
+%!   u = [rand(20000, 1); 0; 1; -0.5; 2; NaN; 0.5; r];
+%!   v = [rand(20000, 1); 0; 1; 2; -1; 0.3; NaN; rand(50, 1)];
+%!   [L1, w1] = env_sample (D, u, v);
+%!   [L0, w0] = __octave_engine (@() env_sample (D, u, v), "__env_sample__");
+%!   assert (size (L1), [numel(u) 3]);
+%!   assert (isequal (L1, L0) && isequal (w1, w0));
+%!   assert (all (abs (sum (L1 .^ 2, 2) - 1) < 1e-12));
+%! unwind_protect_cleanup
+%!   cd (here);
+%!   rand ("state", state);
+%! end_unwind_protect
 
 %!test
 %! ## a damaged __rt_accum__ ahead on the path: one warning

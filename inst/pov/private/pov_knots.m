@@ -133,8 +133,13 @@ function [emax, amax] = interval_err (x, G, W, M, lo, hi)
   amax = r(mod (i - 1, numel (r)) + 1);
 endfunction
 
-## Many tables with few columns: passes vectorised over all tables.
+## Many tables with few columns: passes vectorised over all tables.  The
+## oct-file __pov_knots_batch__, when it is built, makes the same passes.
 function K = refine_batch (x, G, W, M, tol, nmax, first, last, K)
+  if (exist ("__pov_knots_batch__", "file") == 3)
+    K = __pov_knots_batch__ (x, G, W, M, tol, nmax, first, last, K);
+    return;
+  endif
   [n, m, B] = size (G);
   idx = (1:n)';
   M &= reshape (idx >= first & idx <= last, n, 1, B);
