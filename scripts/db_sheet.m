@@ -117,7 +117,7 @@ endfunction
 ## panels: a smaller, regular font, so that PSNR, FLIP and dE fit in the
 ## panel's width on one line).  The axes and the image are made with their
 ## properties given at once: image () and axis () would reset and restyle
-## the axes for every panel (a third of the sheet's time).
+## the axes for every panel.
 function show (pos, rgb, ttl, fs = 9, fw = "bold")
   [h, w, ~] = size (rgb);
   cl = [0 1];                            # the colour range of RGB's class
