@@ -5,7 +5,7 @@
 // inst/render/private/env_sample.m (and env_dirs's directions), compiled:
 // the held-out renders draw a million light samples or more per light, each
 // a dozen element-wise Octave operations.  env_sample.m stays the definition
-// and the reference: it calls this through oct_call, and the tests compare
+// and the reference: it calls this through __lafortune_oct_call__, and the tests compare
 // the two bit for bit.  Every operation is the one the Octave code makes, in
 // its order (built with -ffp-contract=off, src/Makefile); Octave's lookup is
 // the count of table entries <= the value (std::upper_bound), made within

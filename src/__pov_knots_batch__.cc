@@ -5,8 +5,9 @@
 // inst/pov/private/pov_knots.m (its subfunction refine_batch), compiled:
 // each pass there makes several n x m x B temporaries, and pov_write_scene
 // runs it for every term of every fit.  pov_knots.m stays the definition and
-// the reference: it calls this when it is built (as it calls __pov_knots__
-// for one table), and the tests compare the two bit for bit.  Every operation is the one the Octave code makes, in its
+// the reference: it calls this through __lafortune_oct_call__ when it is
+// built (as __pov_knots__ for one table), and the tests compare the two bit
+// for bit.  Every operation is the one the Octave code makes, in its
 // order (built with -ffp-contract=off, src/Makefile); the maxima are
 // Octave's max (NaN ignored, NaN when all are NaN), and the tables over
 // their room keep their worst intervals as Octave's stable sort does.

@@ -440,8 +440,8 @@ endfunction
 ## The oct-file __rt_accum__ makes the same sums, compiled, when it is
 ## built; this code is the definition and the reference
 function acc = add_samples (acc, k0, lith, rad, miss, bg)
-  [done, p, s] = oct_call ("__rt_accum__", "rt_render", rows (acc), k0, int32 (lith), rad,
-                           logical (miss), bg);
+  [done, p, s] = __lafortune_oct_call__ ("__rt_accum__", "rt_render", rows (acc), k0,
+                                         int32 (lith), rad, logical (miss), bg);
   if (done)
     acc(p,:) += s;
     return;
@@ -512,7 +512,8 @@ endfunction
 ## The oct-file __rt_slice__ makes the same operations, compiled, when it
 ## is built; this code is the definition and the reference
 function rad = slice_rad (Rm, w, cosi)
-  [done, rad] = oct_call ("__rt_slice__", "rt_render", Rm, w.a, w.b, w.k, w.nh, cosi);
+  [done, rad] = __lafortune_oct_call__ ("__rt_slice__", "rt_render", Rm, w.a, w.b, w.k, w.nh,
+                                        cosi);
   if (! done)
     rad = double (slice_lookup (Rm, w)) .* cosi;
   endif

@@ -96,9 +96,12 @@ endfunction
 function K = greedy_one (x, G, W, M, tol, nmax, first, last, K)
   kn = find (K(:,1));
   kn = kn(kn >= first & kn <= last);
-  if (numel (kn) >= 2 && exist ("__pov_knots__", "file") == 3)
-    K(__pov_knots__ (x, G, W, M, tol, nmax, kn)) = true;
-    return;
+  if (numel (kn) >= 2)
+    [done, k] = __lafortune_oct_call__ ("__pov_knots__", "pov_knots", x, G, W, M, tol, nmax, kn);
+    if (done)
+      K(k) = true;
+      return;
+    endif
   endif
   e = a = zeros (numel (kn) - 1, 1);
   for j = 1:numel (kn) - 1
@@ -136,8 +139,10 @@ endfunction
 ## Many tables with few columns: passes vectorised over all tables.  The
 ## oct-file __pov_knots_batch__, when it is built, makes the same passes.
 function K = refine_batch (x, G, W, M, tol, nmax, first, last, K)
-  if (exist ("__pov_knots_batch__", "file") == 3)
-    K = __pov_knots_batch__ (x, G, W, M, tol, nmax, first, last, K);
+  [done, Kc] = __lafortune_oct_call__ ("__pov_knots_batch__", "pov_knots", x, G, W, M, tol, nmax,
+                                       first, last, K);
+  if (done)
+    K = Kc;
     return;
   endif
   [n, m, B] = size (G);

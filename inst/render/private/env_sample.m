@@ -12,8 +12,8 @@
 ## estimates the integral of the map's radiance times f cos.
 ## @end deftypefn
 function [L, wt] = env_sample (D, u, v)
-  [done, Lm, wt] = oct_call ("__env_sample__", "env_sample", D.cdf_row, D.cdf_col, D.p, D.rad,
-                             double (u(:)), double (v(:)));
+  [done, Lm, wt] = __lafortune_oct_call__ ("__env_sample__", "env_sample", D.cdf_row, D.cdf_col,
+                                           D.p, D.rad, double (u(:)), double (v(:)));
   if (done)
     [~, R] = env_dirs ([], [], D.rotation);
     L = Lm * R.';

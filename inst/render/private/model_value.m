@@ -12,7 +12,7 @@
 ## raises the warning @code{lafortune:noOctFile} once.
 ## @end deftypefn
 function f = model_value (def, p, X)
-  [done, f] = oct_call ("__model_core__", "model_value", def.type, p, X);
+  [done, f] = __lafortune_oct_call__ ("__model_core__", "model_value", def.type, p, X);
   if (! done)
     f = __lafortune_model_core__ (def, p, X);
   endif

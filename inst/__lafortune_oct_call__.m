@@ -2,9 +2,10 @@
 ## SPDX-License-Identifier: GPL-3.0-or-later
 
 ## -*- texinfo -*-
-## @deftypefn {} {[@var{done}, @dots{}] =} oct_call (@var{name}, @var{who}, @dots{})
+## @deftypefn {} {[@var{done}, @dots{}] =} __lafortune_oct_call__ (@var{name}, @var{who}, @dots{})
 ## Call the compiled inner loop @var{name} (an oct-file of @file{src/}) with
-## the remaining arguments, when it is built (private): @var{done} is true
+## the remaining arguments, when it is built (internal, for every area that
+## has a compiled inner loop): @var{done} is true
 ## and its outputs follow.  Otherwise @var{done} is false, and the caller
 ## does the same arithmetic in Octave, which is the definition.  An oct-file
 ## that does not load (built for another Octave) raises the warning
@@ -12,7 +13,7 @@
 ## again; the oct-file's own errors (@code{lafortune:@dots{}}) are the
 ## caller's.
 ## @end deftypefn
-function [done, varargout] = oct_call (name, who, varargin)
+function [done, varargout] = __lafortune_oct_call__ (name, who, varargin)
   persistent broken = {};
   done = false;
   varargout = cell (1, max (nargout - 1, 0));
@@ -32,3 +33,19 @@ function [done, varargout] = oct_call (name, who, varargin)
              who, name, err.message);
   end_try_catch
 endfunction
+
+%!test
+%! ## an oct-file that is not there: not done, no outputs made
+%! [done, a] = __lafortune_oct_call__ ("__lafortune_no_such_oct__", "test", 1);
+%! assert (done, false);
+%! assert (isempty (a));
+
+%!test
+%! ## a built oct-file: done, with its outputs
+%! x = (0:10)';
+%! [done, k] = __lafortune_oct_call__ ("__pov_knots__", "test", x, abs (x - 4), ones (11, 1),
+%!                                     true (11, 1), 1e-9, 8, [1 11]);
+%! assert (done, true);
+%! assert (k, [1; 5; 11]);
+
+%!error id=lafortune:badInput __lafortune_oct_call__ ("__pov_knots__", "test", (1:4)', ones (4, 2), ones (4, 2), true (4, 2), 0, -1, [1 4])
