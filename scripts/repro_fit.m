@@ -62,6 +62,7 @@ function R = repro_fit (material)
   outdir = fileparts (repro_files ("model", c.results, material, "", 1));
   repro_mkdir (outdir);
   R = struct ("material", material, "lobes", c.lobes);
+  fits = cell (0, 3);                   # every model: method, lobes, model
   for i = 1:numel (c.methods)
     mth = c.methods{i};
     p = P(i);
@@ -96,15 +97,9 @@ function R = repro_fit (material)
       ## its size: the numbers of its type's fields, and its JSON file
       r.params(k) = sum (cellfun (@(f) numel (m.(f)), def.fields));
       r.json_bytes(k) = dir ([base ".json"]).bytes;
-      ## errors of this model on every method's table
-      for t = err
-        e = model_errors (m, S.(repro_method (t{1}).table));
-        r.errors.(t{1}).rmse(k,:) = e.rmse;
-        r.errors.(t{1}).rel_rmse(k,:) = e.rel_rmse;
-        r.errors.(t{1}).log_rmse(k,:) = e.log_rmse;
-        r.errors.(t{1}).cos_rmse(k,:) = e.cos_rmse;
-      endfor
+      fits(end+1,:) = {mth, k, m};
     endfor
+    r.errors = struct ();                # filled below, for all models at once
     ## energy: brdf_fit reports the albedo of the physically based types'
     ## fits, for every lobe count
     if (isfield (info, "albedo_lobes"))
@@ -120,17 +115,25 @@ function R = repro_fit (material)
       r.trace{ch} = T(unique ([1:max(1, floor (rows (T) / 200)):rows(T), rows(T)]),:);
     endfor
     R.(mth) = r;
-    printf ("reproduce: [%s] %s rmse (mean RGB) for %s lobes: %s; %.1f s\n", material, mth,
-            mat2str (c.lobes), mat2str (mean (r.errors.(p.base).rmse, 2)', 4), sum (info.time));
   endfor
-endfunction
-
-## the errors of model M on the table S, by brdf_error (the one place
-## where the metrics are defined)
-function e = model_errors (m, S)
-  [e.rmse, i] = brdf_error (m, S, "plain");
-  e.rel_rmse = i.relative;
-  e.log_rmse = brdf_error (m, S, "log");
-  e.cos_rmse = brdf_error (m, S, "cosine");
+  ## the errors of every model on every method's table, by brdf_error (the
+  ## one place where the metrics are defined): a table's delta once, each
+  ## model evaluated once per table
+  for t = err
+    [E, I] = brdf_error (fits(:,3), S.(repro_method (t{1}).table), {"plain", "log", "cosine"});
+    for i = 1:rows (fits)
+      [mth, k] = fits{i,1:2};
+      R.(mth).errors.(t{1}).rmse(k,:) = E(i,:,1);
+      R.(mth).errors.(t{1}).rel_rmse(k,:) = I(i,1).relative;
+      R.(mth).errors.(t{1}).log_rmse(k,:) = E(i,:,2);
+      R.(mth).errors.(t{1}).cos_rmse(k,:) = E(i,:,3);
+    endfor
+  endfor
+  for i = 1:numel (c.methods)
+    r = R.(c.methods{i});
+    printf ("reproduce: [%s] %s rmse (mean RGB) for %s lobes: %s; %.1f s\n", material,
+            c.methods{i}, mat2str (c.lobes), mat2str (mean (r.errors.(P(i).base).rmse, 2)', 4),
+            sum (r.time));
+  endfor
 endfunction
 

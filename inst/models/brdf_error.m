@@ -5,6 +5,7 @@
 ## @deftypefn  {lafortune} {@var{e} =} brdf_error (@var{model}, @var{S})
 ## @deftypefnx {lafortune} {@var{e} =} brdf_error (@var{model}, @var{S}, @var{metric})
 ## @deftypefnx {lafortune} {[@var{e}, @var{info}] =} brdf_error (@dots{})
+## @deftypefnx {lafortune} {@var{E} =} brdf_error (@{@var{m1}, @var{m2}, @dots{}@}, @var{S}, @{@var{metric1}, @dots{}@})
 ## Error of an analytic model against a table of BRDF samples, by a named
 ## metric: the one place where the toolbox's error metrics are defined (the
 ## fitter minimises the same sums).
@@ -73,7 +74,15 @@
 ## transform of channel c's model values and its derivative), so that
 ## @code{sqrt (spec.w(:,c)) .* (spec.t (f, c) - spec.ty(:,c))} is the
 ## residual vector and @code{ss(c)} its squared norm.  The model is
-## evaluated once, by @code{lafortune_eval}.
+## evaluated once, by @code{material_eval}.
+##
+## Several models on one table: with @var{model} a cell array of K models
+## and @var{metric} a name or a cell array of M names, @var{E} is
+## K x 3 x M (K x 1 x M when every metric is @code{"psnr"}, which cannot be
+## combined with the others) and @var{info} K x M; row k of metric j is
+## bit for bit @code{brdf_error (@var{model}@{k@}, @var{S}, @var{metric}@{j@})}.
+## The table is checked, its delta computed and each model evaluated once:
+## compare every fit of a material this way.
 ##
 ## @example
 ## @group
@@ -81,6 +90,8 @@
 ## S = merl_samples (brdf, "max_samples", 20000);
 ## m = lafortune_fit (S, 1);
 ## [brdf_error(m, S); brdf_error(m, S, "log")]
+## E = brdf_error (@{m, lafortune_fit(S, 2)@}, S, @{"plain", "log"@});
+## E(2,:,1)                          # the 2-lobe fit's plain rms error
 ## @end group
 ## @end example
 ## @seealso{lafortune_fit, merl_samples, merl_plane, img_psnr}
@@ -89,21 +100,66 @@ function [e, info] = brdf_error (model, S, metric = "plain")
   if (nargin < 2 || nargin > 3)
     print_usage ();
   endif
-  model = __lafortune_check_model__ (model, "brdf_error");
-  S = check_table (S, "brdf_error", 1);
-  spec = metric_spec (metric, S, "brdf_error");
-  f = material_eval (model, S.wi, S.wo);
-  ss = zeros (1, 3);
-  for c = 1:3
-    ss(c) = spec.ss (f(:,c), c);
-  endfor
-  e = spec.finish (ss);
-  if (nargout > 1)
-    ss0 = arrayfun (@(c) spec.ss (zeros (rows (f), 1), c), 1:3);
-    info = struct ("metric", metric, "delta", spec.delta, "degree", spec.degree,
-                   "ss", ss, "norm", spec.norm, "peak", spec.peak,
-                   "relative", relative_error (e, spec.finish (ss0)), "spec", spec);
+  models = {model};
+  if (iscell (model))
+    if (isempty (model) || ! isvector (model))
+      error ("lafortune:badModel",
+             "brdf_error: MODEL must be a model or a non-empty cell vector of models, got an empty or %s cell",
+             mat2str (size (model)));
+    endif
+    models = model(:);
   endif
+  metrics = {metric};
+  if (iscell (metric))
+    if (isempty (metric) || ! isvector (metric))
+      error ("lafortune:badMetric",
+             "brdf_error: METRIC must be a name or a non-empty cell vector of names, got an empty or %s cell",
+             mat2str (size (metric)));
+    endif
+    metrics = metric(:).';
+  endif
+  for k = 1:numel (models)
+    models{k} = __lafortune_check_model__ (models{k}, "brdf_error");
+  endfor
+  S = check_table (S, "brdf_error", 1);
+  ## the metrics' definitions: the table's delta (its weighted medians) once
+  specs = cell (1, numel (metrics));
+  delta = [];
+  for j = 1:numel (metrics)
+    specs{j} = metric_spec (metrics{j}, S, "brdf_error", delta);
+    delta = specs{j}.delta;
+  endfor
+  psnr = strcmp (metrics, "psnr");
+  if (any (psnr) && ! all (psnr))
+    error ("lafortune:badMetric",
+           "brdf_error: \"psnr\" (one value per model) cannot be combined with the per-channel metrics %s",
+           strjoin (metrics(! psnr), ", "));
+  endif
+  K = numel (models);
+  M = numel (metrics);
+  e = zeros (K, 3 - 2 * all (psnr), M);
+  info = struct ("metric", cell (K, M), "delta", [], "degree", [], "ss", [], "norm", [],
+                 "peak", [], "relative", [], "spec", []);
+  e0 = cell (1, M);
+  for k = 1:K
+    f = material_eval (models{k}, S.wi, S.wo);
+    for j = 1:M
+      spec = specs{j};
+      ss = zeros (1, 3);
+      for c = 1:3
+        ss(c) = spec.ss (f(:,c), c);
+      endfor
+      e(k,:,j) = spec.finish (ss);
+      if (nargout > 1)
+        if (isempty (e0{j}))           # the zero model's error
+          e0{j} = spec.finish (arrayfun (@(c) spec.ss (zeros (rows (f), 1), c), 1:3));
+        endif
+        info(k,j) = struct ("metric", metrics{j}, "delta", spec.delta, "degree", spec.degree,
+                            "ss", ss, "norm", spec.norm, "peak", spec.peak,
+                            "relative", relative_error (e(k,:,j), e0{j}), "spec", spec);
+      endif
+    endfor
+  endfor
 endfunction
 
 %!demo
@@ -192,6 +248,39 @@ endfunction
 %!   assert (e2, c ^ i1.degree * e1, 1e-10 * abs (e1));
 %! endfor
 
+%!test
+%! ## several models and metrics at once: each row bit for bit the one call's
+%! m2 = struct ("rho_d", [0.2 0.1 0.3], "Cxy", [-0.9 -1 -0.8], "Cz", [0.8 1 0.9], "e", [5 9 3]);
+%! Sw = S; Sw.weight = [2; 1];
+%! names = {"plain", "cosine", "relative", "log", "cuberoot"};
+%! [E, I] = brdf_error ({m, m2, m}, Sw, names);
+%! assert (size (E), [3 3 5]);
+%! assert (size (I), [3 5]);
+%! mm = {m, m2, m};
+%! for k = 1:3
+%!   for j = 1:5
+%!     [e1, i1] = brdf_error (mm{k}, Sw, names{j});
+%!     assert (E(k,:,j), e1);
+%!     assert (I(k,j).relative, i1.relative);
+%!     assert (I(k,j).ss, i1.ss);
+%!     assert (I(k,j).delta, i1.delta);
+%!     assert (I(k,j).metric, names{j});
+%!   endfor
+%! endfor
+%! assert (any (E(1,:,1) != E(2,:,1)));
+%! ## one model in a cell, one metric in a cell: the plain call's shape
+%! assert (brdf_error ({m2}, Sw, {"log"}), brdf_error (m2, Sw, "log"));
+%! ## psnr alone: one column
+%! Sc = S; Sc.kind = "scene"; Sc.weight = [0.25; 0.5]; Sc.irradiance = [2; 1];
+%! P = brdf_error ({m, m2}, Sc, "psnr");
+%! assert (P, [brdf_error(m, Sc, "psnr"); brdf_error(m2, Sc, "psnr")]);
+
+%!error id=lafortune:badMetric brdf_error ({struct("rho_d", [0 0 0], "Cxy", [], "Cz", [], "e", [])}, struct ("wi", [0 0 1], "wo", [0 0 1], "rgb", [1 1 1], "kind", "scene", "weight", 1, "irradiance", 1), {"plain", "psnr"})
+%!error <cannot be combined> brdf_error ({struct("rho_d", [0 0 0], "Cxy", [], "Cz", [], "e", [])}, struct ("wi", [0 0 1], "wo", [0 0 1], "rgb", [1 1 1], "kind", "scene", "weight", 1, "irradiance", 1), {"plain", "psnr"})
+%!error <non-empty cell vector of models> brdf_error ({}, struct ("wi", [0 0 1], "wo", [0 0 1], "rgb", [1 1 1]))
+%!error <non-empty cell vector of names> brdf_error (struct ("rho_d", [0 0 0], "Cxy", [], "Cz", [], "e", []), struct ("wi", [0 0 1], "wo", [0 0 1], "rgb", [1 1 1]), {})
+%!error <METRIC must be one of> brdf_error (struct ("rho_d", [0 0 0], "Cxy", [], "Cz", [], "e", []), struct ("wi", [0 0 1], "wo", [0 0 1], "rgb", [1 1 1]), {"plain", "huber"})
+%!error id=lafortune:badModel brdf_error ({struct("rho_d", [0 0 0], "Cxy", [], "Cz", [], "e", []), 3}, struct ("wi", [0 0 1], "wo", [0 0 1], "rgb", [1 1 1]))
 %!error <Invalid call> brdf_error (1)
 %!error id=lafortune:badModel brdf_error (struct ("rho_d", 1), struct ("wi", [0 0 1], "wo", [0 0 1], "rgb", [1 1 1]))
 %!error id=lafortune:badSamples brdf_error (struct ("rho_d", [0 0 0], "Cxy", [], "Cz", [], "e", []), struct ("wi", [0 0 1]))
