@@ -14,8 +14,8 @@
 ## masks) and whole POV-Ray scene files.  And
 ## rt_render's sums of the samples into the pixels (__rt_accum__), its
 ## shading from the slice table (__rt_slice__) and its draws from an
-## environment map (__env_sample__): whole renders and renders from the
-## trace cache.
+## environment map (__env_sample__), and the camera rays of its pixel
+## samples (__rt_rays__): whole renders and renders from the trace cache.
 
 %!function varargout = __octave_engine (fn, oct = "__lafortune_core__")
 %!  ## FN () with the oct-file OCT off the path
@@ -413,6 +413,47 @@
 %!   assert (nnz (a) > 0);
 %! endfor
 
+
+%!test
+%! ## sample_rays (private; the oct-file __rt_rays__ when it is built, else
+%! ## pixel_samples and the one camera's __lafortune_camera_rays__): the same
+%! ## rays bit for bit without the oct-file, for both cameras, stratified
+%! ## cells of several shapes (spp 128: 16 x 8; 7: 7 x 1; 1), jittered and at
+%! ## the cell centres, samples of every pass up to a large index
+%! here = pwd ();
+%! state = rand ("state");
+%! unwind_protect
+%!   cd (fullfile (fileparts (which ("rt_render")), "private"));
+%!   for cam = {"orthographic", "perspective"}
+%!     for spp = [128 7 1]
+%!       sc = scene_make ("sphere", "size", [37 53], "camera", cam{1});
+%!       sc.spp = spp;
+%!       ## a camera in no axis's direction: every sum's order matters
+%!       sc.camera.eye = [1.3 0.7 4.9]; sc.camera.up = [0.1 1 0.05]; sc.camera.target = [0.02 -0.03 0.01];
+%!       c = __lafortune_scene_camera__ (sc);
+%!       k = [(0:2000)'; floor(rand (3000, 1) * 37 * 53 * spp); 37 * 53 * spp - 1; 2^40 + 17];
+%!       for jit = [true false]
+%!         rand ("state", 5);
+%!         [O1, D1] = sample_rays (sc, c, k, jit);
+%!         rand ("state", 5);
+%!         [O0, D0] = __octave_engine (@() sample_rays (sc, c, k, jit), "__rt_rays__");
+%!         assert (size (O1), [numel(k) 3]);
+%!         assert (isequal (O1, O0) && isequal (D1, D0), "%s camera, spp %d, jitter %d: the rays differ", cam{1}, spp, jit);
+%!       endfor
+%!     endfor
+%!   endfor
+%!   ## and a whole render with the perspective camera (direct mode)
+%!   sp = scene_make ("sphere", "size", [16 12], "camera", "perspective");
+%!   sp.spp = 3;
+%!   sp.camera.eye = [1.3 0.7 4.9]; sp.camera.up = [0.1 1 0.05];
+%!   m = struct ("rho_d", [0.3 0.2 0.1], "Cxy", [-0.8 -0.8 -0.8], "Cz", [0.7 0.7 0.7], "e", [20 20 20]);
+%!   a = rt_render (sp, m, "progress", false);
+%!   a0 = __octave_engine (@() rt_render (sp, m, "progress", false), "__rt_rays__");
+%!   assert (__same_bits (a, a0) && nnz (a) > 0);
+%! unwind_protect_cleanup
+%!   cd (here);
+%!   rand ("state", state);
+%! end_unwind_protect
 
 %!test
 %! ## env_sample (private; the oct-file __env_sample__ when it is built) on

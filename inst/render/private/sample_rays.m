@@ -10,7 +10,9 @@
 ## for @code{rt_render} and @code{merl_scene}, so both take the same
 ## samples).  Sample k gets the k-th pair of the random stream, so that the
 ## samples do not depend on how many are traced at once (rt_render's
-## "chunk", merl_scene's own).
+## "chunk", merl_scene's own).  pixel_samples and __lafortune_camera_rays__
+## are the definition; the oct-file __rt_rays__ makes the same rays, bit for
+## bit, when it is built.
 ## @end deftypefn
 function [O, D] = sample_rays (scene, cam, k, jitter)
   m = numel (k);
@@ -19,6 +21,11 @@ function [O, D] = sample_rays (scene, cam, k, jitter)
   else
     j = 0.5 * ones (m, 2);
   endif
-  [x, y] = pixel_samples (scene.height, scene.width, k, scene.spp, j);
-  [O, D] = __lafortune_camera_rays__ (cam, x, y);
+  [done, O, D] = __lafortune_oct_call__ ("__rt_rays__", "rt_render", scene.height, scene.width,
+                                         k, scene.spp, j, ! strcmp (cam.type, "orthographic"),
+                                         cam.eye, cam.f, cam.r, cam.u, cam.w, cam.h);
+  if (! done)
+    [x, y] = pixel_samples (scene.height, scene.width, k, scene.spp, j);
+    [O, D] = __lafortune_camera_rays__ (cam, x, y);
+  endif
 endfunction
