@@ -45,6 +45,9 @@
 ##
 ## Both give the same nearest hits; where two triangles are hit at exactly the
 ## same distance (a ray through a shared edge) either may be reported.
+## Spheres are hit by the oct-file @code{__rt_sphere__} when it is built,
+## unless @var{engine} is @qcode{"octave"}: the same arithmetic as the
+## Octave code, bit for bit.
 ##
 ## @example
 ## @group
@@ -117,20 +120,35 @@ function hit = rt_intersect (objects, O, D, tmin, tmax, anyhit, engine)
       endif
     endif
     ob = objects(k);
-    o = O(todo,:);
-    d = D(todo,:);
-    tb = tbest(todo);
-    t0 = tmin(todo);
+    if (numel (todo) == n)               # every ray (no copies)
+      o = O;
+      d = D;
+      tb = tbest;
+      t0 = tmin;
+    else
+      o = O(todo,:);
+      d = D(todo,:);
+      tb = tbest(todo);
+      t0 = tmin(todo);
+    endif
     switch (ob.type)
       case "sphere"
-        oc = o - ob.center(:).';
-        b = sum (oc .* d, 2);
-        disc = b .^ 2 - (sum (oc .^ 2, 2) - ob.radius ^ 2);
-        sq = sqrt (max (disc, 0));
-        t = -b - sq;
-        back = t <= t0;
-        t(back) = -b(back) + sq(back);
-        ok = disc >= 0 & t > t0 & t < tb;
+        ## the oct-file __rt_sphere__ makes the same operations, compiled
+        done = false;
+        if (! strcmp (engine, "octave"))
+          [done, t, ok] = __lafortune_oct_call__ ("__rt_sphere__", "rt_intersect", o, d,
+                                                  double (ob.center(:).'), ob.radius ^ 2, t0, tb);
+        endif
+        if (! done)
+          oc = o - ob.center(:).';
+          b = sum (oc .* d, 2);
+          disc = b .^ 2 - (sum (oc .^ 2, 2) - ob.radius ^ 2);
+          sq = sqrt (max (disc, 0));
+          t = -b - sq;
+          back = t <= t0;
+          t(back) = -b(back) + sq(back);
+          ok = disc >= 0 & t > t0 & t < tb;
+        endif
         pr = 0; u = 0; v = 0;
       case "plane"
         nrm = ob.normal(:).';
@@ -162,12 +180,15 @@ function hit = rt_intersect (objects, O, D, tmin, tmax, anyhit, engine)
                ob.type);
     endswitch
     i = todo(ok);
-    hit.t(i) = t(ok);
-    tbest(i) = t(ok);
+    tk = t(ok);
+    hit.t(i) = tk;
+    tbest(i) = tk;
     hit.obj(i) = k;
-    hit.prim(i) = pr;
-    hit.u(i) = u;
-    hit.v(i) = v;
+    if (k > 1 || ! isequal (pr, 0) || ! isequal (u, 0) || ! isequal (v, 0))
+      hit.prim(i) = pr;                  # (the first object's zeros are there)
+      hit.u(i) = u;
+      hit.v(i) = v;
+    endif
   endfor
 endfunction
 
@@ -368,6 +389,21 @@ endfunction
 %! ## any-hit: blocked or not
 %! hit = rt_intersect (s.objects, [-1.6 2 -0.2; 5 5 5], [0 -1 0; 0 1 0], 0, Inf, true);
 %! assert (isfinite (hit.t), [true; false]);
+
+%!test
+%! ## spheres: the compiled hits (__rt_sphere__) and engine "octave"'s, bit
+%! ## for bit, nearest and any hits, from outside and inside, with bounds
+%! s = scene_make ("spheres");
+%! rand ("state", 7);
+%! n = 4000;
+%! O = randn (n, 3) * 2; D = randn (n, 3); D ./= sqrt (sum (D .^ 2, 2));
+%! tm = 1 + 5 * rand (n, 1);
+%! for any = [false true]
+%!   a = rt_intersect (s.objects, O, D, 1e-9, tm, any);
+%!   b = rt_intersect (s.objects, O, D, 1e-9, tm, any, "octave");
+%!   assert (isequal (a, b));
+%!   assert (nnz (isfinite (a.t)) > 100);
+%! endfor
 
 %!error <Invalid call> rt_intersect (1, 2)
 %!error id=lafortune:badScene rt_intersect (1, [0 0 0], [0 0 1])
