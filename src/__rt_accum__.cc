@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // __rt_accum__: rt_render's sums of one chunk's samples into the pixels
-// (its subfunction add_samples), compiled.  A render from the trace cache
+// (its subfunction add_samples), compiled (rt_shade.h's rt_chunk_sums).  A render from the trace cache
 // spends most of its time there: for every chunk, three accumarrays and
 // three additions over the whole image.  add_samples stays the definition
 // and the reference: it calls this when it is built, and the tests compare
@@ -17,6 +17,7 @@
 #include <octave/oct.h>
 
 #include "oct_guard.h"
+#include "rt_shade.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -82,75 +83,11 @@ their first sample), @var{s} (numel (@var{p}) x 3) each one's sum.\n\
       const octave_idx_type m = miss.numel ();
       const octave_idx_type nl = hs.numel ();
       const double bg[3] = {bgm(0), bgm(1), bgm(2)};
-      const bool anybg = bg[0] != 0 || bg[1] != 0 || bg[2] != 0;
-      // the order of the sums: the lit samples as given, and with a
-      // background the misses too, stably sorted by sample index (as
-      // add_samples's sort: a lit sample before a miss of the same index)
-      std::vector<std::int64_t> j;     // >= 0: row of RAD; < 0: -(sample) - 1
-      j.reserve (nl + (anybg ? m : 0));
-      bool sorted = true;
-      for (octave_idx_type i = 0; i < nl; i++)
-        {
-          const std::int32_t h = hs(i).value ();
-          if (h < 1 || h > m)
-            throw std::invalid_argument ("LITH must hold sample indices 1..numel (MISS)");
-          if (i > 0 && h < hs(i-1).value ())
-            sorted = false;
-          j.push_back (i);
-        }
-      if (anybg)
-        {
-          auto key = [&] (std::int64_t x) -> std::int64_t
-            { return x >= 0 ? static_cast<std::int64_t> (hs(x).value ()) - 1 : -x - 1; };
-          std::vector<std::int64_t> mi;
-          for (octave_idx_type i = 0; i < m; i++)
-            if (miss(i))
-              mi.push_back (-static_cast<std::int64_t> (i) - 1);
-          if (sorted)                  // a merge of two sorted lists
-            {
-              std::vector<std::int64_t> out;
-              out.reserve (j.size () + mi.size ());
-              std::size_t a = 0, b = 0;
-              while (a < j.size () || b < mi.size ())
-                if (b == mi.size () || (a < j.size () && key (j[a]) <= key (mi[b])))
-                  out.push_back (j[a++]);
-                else
-                  out.push_back (mi[b++]);
-              j.swap (out);
-            }
-          else
-            {
-              j.insert (j.end (), mi.begin (), mi.end ());
-              std::stable_sort (j.begin (), j.end (),
-                                [&] (std::int64_t x, std::int64_t y) { return key (x) < key (y); });
-            }
-        }
-      // each pixel's sum from 0, in the order of the samples; the chunk's
-      // pixels are the SPAN from k0's on (mod NPIX)
-      const std::uint64_t span = std::min<std::uint64_t> (m, npix);
-      const std::uint64_t p0 = k0 % npix;
-      std::vector<octave_idx_type> slot (span, -1);
+      static_assert (sizeof (octave_int32) == sizeof (std::int32_t), "octave_int32 is an int32");
       std::vector<std::uint64_t> touched;
       std::vector<double> s;
-      touched.reserve (span);
-      s.reserve (3 * span);
-      const double *r = rad.data ();
-      for (const std::int64_t x : j)
-        {
-          const std::uint64_t smp = x >= 0 ? static_cast<std::uint64_t> (hs(x).value ()) - 1
-                                           : static_cast<std::uint64_t> (-x - 1);
-          const std::uint64_t p = (k0 + smp) % npix;
-          const std::uint64_t o = (p + npix - p0) % npix;
-          octave_idx_type q = slot[o];
-          if (q < 0)
-            {
-              q = slot[o] = touched.size ();
-              touched.push_back (p);
-              s.insert (s.end (), {0.0, 0.0, 0.0});
-            }
-          for (int c = 0; c < 3; c++)
-            s[3 * q + c] += x >= 0 ? r[x + c * nl] : bg[c];
-        }
+      rt_chunk_sums (npix, k0, reinterpret_cast<const std::int32_t *> (hs.data ()), nl,
+                     rad.data (), miss.data (), m, bg, touched, s);
       const octave_idx_type nt = touched.size ();
       pix = ColumnVector (nt);
       sums = Matrix (nt, 3);

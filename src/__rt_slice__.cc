@@ -4,7 +4,7 @@
 // __rt_slice__: rt_render's shading of lit samples from the slice table
 // (its subfunction slice_rad: the table interpolated bilinearly with the
 // samples' weights, slice_lookup, in single precision, then times cos ti in
-// double), compiled.  A render from the trace cache in slice mode spends
+// double), compiled (rt_shade.h's rt_slice_rad).  A render from the trace cache in slice mode spends
 // about half its time there.  slice_rad stays the definition and the
 // reference: it calls this when it is built, and the tests compare the two
 // bit for bit.  Every operation is the one the Octave code makes, in its
@@ -14,6 +14,7 @@
 #include <octave/oct.h>
 
 #include "oct_guard.h"
+#include "rt_shade.h"
 
 #include <cstdint>
 #include <stdexcept>
@@ -62,30 +63,9 @@ as double times @var{cosi} (double).  @var{rad} is numel (@var{k}) x 3.\n\
       if (! (nhd >= 0 && nhd < nr && nhd == static_cast<double> (static_cast<octave_idx_type> (nhd))))
         throw std::invalid_argument ("NH must be an integer between 0 and rows (RM)");
       const octave_idx_type nh = static_cast<octave_idx_type> (nhd);
-      const float *R = Rm.data ();
-      double *out = rad.fortran_vec ();
-      for (octave_idx_type i = 0; i < m; i++)
-        {
-          const octave_idx_type k0 = static_cast<octave_idx_type> (k(i).value ()) - 1;
-          if (k0 < 0 || k0 + nh + 1 >= nr)
-            throw std::invalid_argument ("K must index the table's entries (K + NH + 1 <= rows (RM))");
-          const float ai = a(i);
-          const float bi = b(i);
-          // the weights as slice_lookup forms them: ((1 - a) .* (1 - b)), ...
-          const float w00 = (1.0f - ai) * (1.0f - bi);
-          const float w10 = ai * (1.0f - bi);
-          const float w01 = (1.0f - ai) * bi;
-          const float w11 = ai * bi;
-          for (int c = 0; c < 3; c++)
-            {
-              const float *Rc = R + c * nr;
-              float v = w00 * Rc[k0];
-              v = v + w10 * Rc[k0 + 1];
-              v = v + w01 * Rc[k0 + nh];
-              v = v + w11 * Rc[k0 + nh + 1];
-              out[i + c * m] = static_cast<double> (v) * cosi(i);
-            }
-        }
+      static_assert (sizeof (octave_int32) == sizeof (std::int32_t), "octave_int32 is an int32");
+      rt_slice_rad (Rm.data (), nr, nh, reinterpret_cast<const std::int32_t *> (k.data ()),
+                    a.data (), b.data (), cosi.data (), m, rad.fortran_vec ());
     });
   return ovl (rad);
 }

@@ -299,6 +299,21 @@ function [img, info, cache] = rt_render (scene, material, varargin)
   if (lights && cached)                # nothing to trace
     last = -1;
   endif
+  if (cached && strcmp (mode, "slice"))
+    ## the loop below over the cache's chunks, compiled, in one call (the
+    ## same operations: slice_rad, then add_samples, chunk by chunk)
+    t0 = tic ();
+    [done, A] = __lafortune_oct_call__ ("__rt_slice_sum__", "rt_render", Rm, opt.cache.chunks,
+                                        chunk, total, npix, bg);
+    if (done)
+      acc = A;
+      last = -1;
+      t_shade += toc (t0);
+      if (opt.progress)
+        prog = progress_line (prog, 1, toc (t_start));
+      endif
+    endif
+  endif
   state = rand ("state");
   unwind_protect
     rand ("state", scene.seed);
