@@ -16,6 +16,7 @@
 ## shading from the slice table (__rt_slice__) and its draws from an
 ## environment map (__env_sample__), and the camera rays of its pixel
 ## samples (__rt_rays__): whole renders and renders from the trace cache.
+## And the directions of the MERL bins (__merl_grid__).
 
 %!function varargout = __octave_engine (fn, oct = "__lafortune_core__")
 %!  ## FN () with the oct-file OCT off the path
@@ -454,6 +455,19 @@
 %!   cd (here);
 %!   rand ("state", state);
 %! end_unwind_protect
+
+%!test
+%! ## __lafortune_merl_grid__ (the oct-file __merl_grid__ when it is built):
+%! ## the directions of every MERL bin, and of bins in another order, bit for
+%! ## bit without the oct-file
+%! [wi, wo] = __lafortune_merl_grid__ ();
+%! [wi0, wo0] = __octave_engine (@() __lafortune_merl_grid__ (), "__merl_grid__");
+%! assert (isequal (wi, wi0) && isequal (wo, wo0));
+%! rand ("seed", 3);
+%! idx = [1458000; 1; ceil(rand (5000, 1) * 1458000)];
+%! [a, b] = __lafortune_merl_grid__ (idx');
+%! [a0, b0] = __octave_engine (@() __lafortune_merl_grid__ (idx'), "__merl_grid__");
+%! assert (isequal (a, a0) && isequal (b, b0) && isequal (a, wi(idx,:)));
 
 %!test
 %! ## env_sample (private; the oct-file __env_sample__ when it is built) on

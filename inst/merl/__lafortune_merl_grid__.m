@@ -7,9 +7,19 @@
 ## Directions of every MERL bin (private), in bin order (phi_d fastest), at
 ## the grid points theta_h = (i/90)^2 pi/2, theta_d = j/90 pi/2,
 ## phi_d = k/180 pi, with phi_h = 0.  1458000 x 3 each, or only the bins
-## with the (1-based) indices @var{idx}, in that order.
+## with the (1-based) indices @var{idx}, in that order.  This code is the
+## definition; the oct-file __merl_grid__ makes the same operations,
+## compiled, when it is built.
 ## @end deftypefn
 function [wi, wo] = __lafortune_merl_grid__ (idx)
+  args = {};
+  if (nargin >= 1)
+    args = {double(idx(:))};
+  endif
+  [done, wi, wo] = __lafortune_oct_call__ ("__merl_grid__", "__lafortune_merl_grid__", args{:});
+  if (done)
+    return;
+  endif
   if (nargin < 1)
     [ip, id, ih] = ndgrid (0:179, 0:89, 0:89);
     ip = ip(:); id = id(:); ih = ih(:);
