@@ -16,7 +16,8 @@
 ## shading from the slice table (__rt_slice__) and its draws from an
 ## environment map (__env_sample__), and the camera rays of its pixel
 ## samples (__rt_rays__): whole renders and renders from the trace cache.
-## And the directions of the MERL bins (__merl_grid__).
+## And the directions of the MERL bins (__merl_grid__) and of angle
+## triples (__slice_dirs__).
 
 %!function varargout = __octave_engine (fn, oct = "__lafortune_core__")
 %!  ## FN () with the oct-file OCT off the path
@@ -468,6 +469,24 @@
 %! [a, b] = __lafortune_merl_grid__ (idx');
 %! [a0, b0] = __octave_engine (@() __lafortune_merl_grid__ (idx'), "__merl_grid__");
 %! assert (isequal (a, a0) && isequal (b, b0) && isequal (a, wi(idx,:)));
+
+%!test
+%! ## __lafortune_slice_dirs__ (the oct-file __slice_dirs__ when it is
+%! ## built): the same directions bit for bit without the oct-file, NaN and
+%! ## signed zeros too, with a cosine per pair and one for all: random
+%! ## angles, the poles (sin ti sin to <= 0), pairs no normal reaches (cos phi
+%! ## clamped), angles beyond pi/2 and NaN
+%! rand ("seed", 9);
+%! n = 20000;
+%! ti = [rand(n, 1) * 1.7; 0; 0; pi/2; 1; NaN; 0.5; -0.3; 3];
+%! to = [rand(n, 1) * 1.7; 0; 0.4; 0; NaN; 1; 0.5; 0.2; 0.1];
+%! cg = [2 * rand(n, 1) - 1; 1; 0.3; -1; 0.5; 0.5; NaN; 0.9; -0.99];
+%! bits = @(x) typecast (x(:), "uint64");
+%! for c = {cg, 0.37, -1, 1}
+%!   [wi, wo] = __lafortune_slice_dirs__ (ti, to, c{1});
+%!   [wi0, wo0] = __octave_engine (@() __lafortune_slice_dirs__ (ti, to, c{1}), "__slice_dirs__");
+%!   assert (isequal (bits (wi), bits (wi0)) && isequal (bits (wo), bits (wo0)));
+%! endfor
 
 %!test
 %! ## env_sample (private; the oct-file __env_sample__ when it is built) on
