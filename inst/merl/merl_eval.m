@@ -56,16 +56,18 @@ function [rgb, valid] = merl_eval (brdf, wi, wo, method = "nearest")
            "merl_eval: METHOD must be \"nearest\", \"reference\" or \"linear\"");
   endif
   if (strcmp (method, "nearest"))
-    if (exist ("__merl_nearest__", "file") == 3)
-      data = brdf.data;
-      if (! isa (data, "double"))
-        data = double (data);
-      endif
-      [rgb, valid] = __merl_nearest__ (data, brdf.valid, wi, wo);
+    data = brdf.data;
+    if (! isa (data, "double"))
+      data = double (data);
+    endif
+    ## (a built oct-file that does not load warns there, once)
+    [done, rgb, valid] = __lafortune_oct_call__ ("__merl_nearest__", "merl_eval", data,
+                                                 brdf.valid, wi, wo);
+    if (done)
       return;
     endif
     warning ("off", "backtrace", "local");
-    if (! warned_once ())
+    if (exist ("__merl_nearest__", "file") != 3 && ! warned_once ())
       warning ("lafortune:noOctFile",
                "merl_eval: the oct-file __merl_nearest__ is missing (run make -C src, or pkg install the package); using the slower \"reference\" arithmetic");
     endif

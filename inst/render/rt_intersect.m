@@ -162,14 +162,18 @@ function hit = rt_intersect (objects, O, D, tmin, tmax, anyhit, engine)
         else
           bvh = rt_bvh (ob.vertices, ob.faces);
         endif
+        done = false;
         if (compiled && isfield (bvh, "boxes"))
           nthr = 1;
           if (rows (ob.faces) > 2048 && rows (o) >= 2048)
             nthr = min (nproc (), 16);      # one thread per core
           endif
-          [t, pr, u, v] = __rt_traverse__ (bvh.boxes, bvh.tris, bvh.tri, bvh.nleaf,
-                                           o, d, t0, tb, anyhit, nthr);
-        else
+          ## (a built oct-file that does not load warns there, once)
+          [done, t, pr, u, v] = __lafortune_oct_call__ ("__rt_traverse__", "rt_intersect",
+                                                        bvh.boxes, bvh.tris, bvh.tri, bvh.nleaf,
+                                                        o, d, t0, tb, anyhit, nthr);
+        endif
+        if (! done)
           [t, pr, u, v] = mesh_hit (bvh, o, d, t0, tb, anyhit);
         endif
         ok = t < tb;
