@@ -100,24 +100,8 @@ function [e, info] = brdf_error (model, S, metric = "plain")
   if (nargin < 2 || nargin > 3)
     print_usage ();
   endif
-  models = {model};
-  if (iscell (model))
-    if (isempty (model) || ! isvector (model))
-      error ("lafortune:badModel",
-             "brdf_error: MODEL must be a model or a non-empty cell vector of models, got an empty or %s cell",
-             mat2str (size (model)));
-    endif
-    models = model(:);
-  endif
-  metrics = {metric};
-  if (iscell (metric))
-    if (isempty (metric) || ! isvector (metric))
-      error ("lafortune:badMetric",
-             "brdf_error: METRIC must be a name or a non-empty cell vector of names, got an empty or %s cell",
-             mat2str (size (metric)));
-    endif
-    metrics = metric(:).';
-  endif
+  models = listed (model, "MODEL", "model", "lafortune:badModel");
+  metrics = listed (metric, "METRIC", "name", "lafortune:badMetric").';
   for k = 1:numel (models)
     models{k} = __lafortune_check_model__ (models{k}, "brdf_error");
   endfor
@@ -160,6 +144,18 @@ function [e, info] = brdf_error (model, S, metric = "plain")
       endif
     endfor
   endfor
+endfunction
+
+## X as a column cell: {X}, or the cell vector X itself (not empty)
+function c = listed (x, name, what, id)
+  c = {x};
+  if (iscell (x))
+    if (isempty (x) || ! isvector (x))
+      error (id, "brdf_error: %s must be a %s or a non-empty cell vector of %ss, got a cell of size %s",
+             name, what, what, mat2str (size (x)));
+    endif
+    c = x(:);
+  endif
 endfunction
 
 %!demo
