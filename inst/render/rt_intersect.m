@@ -135,9 +135,9 @@ function hit = rt_intersect (objects, O, D, tmin, tmax, anyhit, engine)
       case "sphere"
         ## the oct-file __rt_sphere__ makes the same operations, compiled
         done = false;
-        if (! strcmp (engine, "octave"))
+        if (! strcmp (engine, "octave") && isa (ob.center, "double") && isa (ob.radius, "double"))
           [done, t, ok] = __lafortune_oct_call__ ("__rt_sphere__", "rt_intersect", o, d,
-                                                  double (ob.center(:).'), ob.radius ^ 2, t0, tb);
+                                                  ob.center(:).', ob.radius ^ 2, t0, tb);
         endif
         if (! done)
           oc = o - ob.center(:).';
