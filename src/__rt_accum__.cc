@@ -2,13 +2,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // __rt_accum__: rt_render's sums of one chunk's samples into the pixels
-// (its subfunction add_samples), compiled (rt_shade.h's rt_chunk_sums).  A render from the trace cache
-// spends most of its time there: for every chunk, three accumarrays and
-// three additions over the whole image.  add_samples stays the definition
-// and the reference: it calls this when it is built, and the tests compare
-// the two bit for bit.  The sums are those of the Octave code, in its
+// (its subfunction chunk_sums), compiled (rt_shade.h's rt_chunk_sums): in
+// Octave, three accumarrays over the whole image for every chunk.
+// chunk_sums stays the definition and the reference: it calls this when it
+// is built, and the tests compare the two bit for bit.  The sums are those of the Octave code, in its
 // order: each pixel's samples of the chunk summed from 0 in the order of
-// their sample index (accumarray); add_samples adds the sums to the
+// their sample index (accumarray); its caller adds the sums to the
 // pixels' values (acc + sum; a pixel no sample reaches gets + 0 in the
 // Octave code, which changes nothing, as the image holds no -0: it starts
 // at +0 and only has sums added).  Built with -ffp-contract=off
@@ -37,7 +36,7 @@ namespace
 DEFUN_DLD (__rt_accum__, args, nargout,
            "-*- texinfo -*-\n\
 @deftypefn {} {[@var{p}, @var{s}] =} __rt_accum__ (@var{npix}, @var{k0}, @var{lith}, @var{rad}, @var{miss}, @var{bg})\n\
-Internal: the compiled sums of rt_render's private @code{add_samples} (see\n\
+Internal: the compiled sums of rt_render's private @code{chunk_sums} (see\n\
 there).  The chunk of samples @var{k0}+1 @dots{} @var{k0}+M, M = numel\n\
 (@var{miss}), sample k at pixel mod (k - 1, @var{npix}) + 1: the lit\n\
 samples' indices in the chunk @var{lith} (int32, 1..M) with radiance\n\

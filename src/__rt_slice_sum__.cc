@@ -3,7 +3,7 @@
 //
 // __rt_slice_sum__: a whole render from rt_render's trace cache in slice
 // mode, compiled: for each cached chunk in turn its shading from the slice
-// table (slice_rad) and its sums into the pixels (add_samples), as
+// table (slice_rad) and its sums into the pixels (chunk_sums), as
 // rt_render's loop over the chunks does, in one call instead of two per
 // chunk (a fit's render from the measured render's trace is 256 chunks).
 // rt_render's loop stays the definition and the reference (and the
@@ -116,7 +116,7 @@ the cached chunks @var{chunks} (a cell of structs with fields @code{h},\n\
           const FloatNDArray b = bwv.float_array_value ();
           const NDArray cosi = cv.array_value ();
           const boolNDArray miss = mv.bool_array_value ();
-          // slice_rad, then add_samples: the chunk's sums added to the image
+          // slice_rad, then chunk_sums: the chunk's sums added to the image
           rad.resize (3 * nl);
           rt_slice_rad (Rm.data (), nr, static_cast<octave_idx_type> (nhd),
                         reinterpret_cast<const std::int32_t *> (k.data ()), a.data (), b.data (),

@@ -3,7 +3,7 @@
 //
 // rt_render's shading from the slice table and its sums of a chunk's
 // samples into the pixels, compiled: the one C++ copy of rt_render's
-// private slice_rad (slice_lookup) and add_samples, shared by the oct-files
+// private slice_rad (slice_lookup) and chunk_sums, shared by the oct-files
 // __rt_slice__ and __rt_accum__ (one chunk each) and __rt_slice_sum__ (a
 // whole render from the trace cache).  The Octave subfunctions are the
 // definition: every operation is theirs, in their order and precision
@@ -51,7 +51,7 @@ rt_slice_rad (const float *R, octave_idx_type nr, octave_idx_type nh, const std:
     }
 }
 
-// add_samples's sums of one chunk: the samples K0+1 ... K0+M (sample k at
+// chunk_sums's sums of one chunk: the samples K0+1 ... K0+M (sample k at
 // pixel mod (k - 1, NPIX) + 1), the lit ones' indices in the chunk LITH
 // (NL of them, 1..M) with radiance RAD (NL x 3, column-major), the misses
 // MISS with the background BG when it is not black.  TOUCHED gets the

@@ -385,7 +385,7 @@
 %!endfunction
 
 %!test
-%! ## rt_render's sums of the samples into the pixels (add_samples, which
+%! ## rt_render's sums of the samples into the pixels (chunk_sums, which
 %! ## calls the oct-file __rt_accum__ when it is built) and its shading from
 %! ## the slice table (slice_rad, __rt_slice__), and its draws from an
 %! ## environment map (env_sample, __env_sample__): whole renders and renders
@@ -517,7 +517,7 @@
 
 %!test
 %! ## a damaged __rt_accum__ ahead on the path: one warning
-%! ## lafortune:noOctFile naming rt_render, then add_samples's Octave
+%! ## lafortune:noOctFile naming rt_render, then chunk_sums's Octave
 %! ## arithmetic, the same image; in a fresh octave-cli
 %! m = struct ("rho_d", [0.3 0.2 0.1], "Cxy", [-0.8 -0.8 -0.8], "Cz", [0.7 0.7 0.7], "e", [20 20 20]);
 %! sc = scene_make ("sphere", "size", [6 4]);

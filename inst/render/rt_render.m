@@ -301,7 +301,7 @@ function [img, info, cache] = rt_render (scene, material, varargin)
   endif
   if (cached && strcmp (mode, "slice"))
     ## the loop below over the cache's chunks, compiled, in one call (the
-    ## same operations: slice_rad, then add_samples, chunk by chunk)
+    ## same operations: slice_rad, then chunk_sums, chunk by chunk)
     t0 = tic ();
     [done, A] = __lafortune_oct_call__ ("__rt_slice_sum__", "rt_render", Rm, opt.cache.chunks,
                                         chunk, total, npix, bg);
@@ -379,7 +379,8 @@ function [img, info, cache] = rt_render (scene, material, varargin)
         lith = T.h(il);
         miss = T.miss;
       endif
-      acc = add_samples (acc, k0, lith, rad, miss, bg);
+      [p, sums] = chunk_sums (npix, k0, lith, rad, miss, bg);
+      acc(p,:) += sums;                # (acc is this function's own: no copy)
       t_shade += toc (t0);
 
       if (opt.progress)
@@ -443,7 +444,8 @@ function [acc, te] = shade_lights (acc, material, X, chunks, nrow, ic, chunk, bg
     Tc = chunks{i};
     rad = F(r0+1:r0+nrow(i),:) .* double (Tc.w);
     r0 += nrow(i);
-    acc = add_samples (acc, (i - 1) * chunk, Tc.h, rad, Tc.miss, bg);
+    [p, sums] = chunk_sums (rows (acc), (i - 1) * chunk, Tc.h, rad, Tc.miss, bg);
+    acc(p,:) += sums;
   endfor
 endfunction
 
@@ -452,16 +454,19 @@ endfunction
 ## samples LITH (int32 indices in the chunk) with radiance RAD, the misses
 ## MISS with the background BG; the samples that add 0 (shadow, and misses
 ## on a black background) are left out, which changes no bit of the sum.
-## The oct-file __rt_accum__ makes the same sums, compiled, when it is
-## built; this code is the definition and the reference
-function acc = add_samples (acc, k0, lith, rad, miss, bg)
-  [done, p, s] = __lafortune_oct_call__ ("__rt_accum__", "rt_render", rows (acc), k0,
+## The pixels P and their sums S, which the caller adds to its image
+## (acc(P,:) += S: in the caller, whose image it is, Octave changes it in
+## place; a function that took and returned the image would copy it).  The
+## oct-file __rt_accum__ makes the same sums, compiled, when it is built
+## (P the pixels reached); this code is the definition and the reference
+## (P every pixel: adding 0 to the others changes no bit, as the image holds
+## no -0)
+function [p, s] = chunk_sums (npix, k0, lith, rad, miss, bg)
+  [done, p, s] = __lafortune_oct_call__ ("__rt_accum__", "rt_render", npix, k0,
                                          int32 (lith), rad, logical (miss), bg);
   if (done)
-    acc(p,:) += s;
     return;
   endif
-  npix = rows (acc);
   pix = mod (k0 + (0:numel (miss)-1).', npix) + 1;
   j = double (lith);
   if (any (bg))
@@ -470,8 +475,10 @@ function acc = add_samples (acc, k0, lith, rad, miss, bg)
     [j, o] = sort (j);
     rad = rad(o,:);
   endif
+  p = (1:npix).';
+  s = zeros (npix, 3);
   for c = 1:3
-    acc(:,c) += accumarray (pix(j), rad(:,c), [npix 1]);
+    s(:,c) = accumarray (pix(j), rad(:,c), [npix 1]);
   endfor
 endfunction
 
