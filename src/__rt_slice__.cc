@@ -33,7 +33,7 @@ as double times @var{cosi} (double).  @var{rad} is numel (@var{k}) x 3.\n\
   if (args.length () != 6)
     print_usage ();
   const octave_value& Rv = args(0);
-  if (! Rv.is_single_type () || Rv.iscomplex () || Rv.ndims () != 2 || Rv.columns () != 3)
+  if (! rt_table_ok (Rv))
     error_with_id ("lafortune:badInput", "__rt_slice__: RM must be rows x 3 real singles, got %s",
                    what_of (Rv).c_str ());
   const octave_idx_type m = args(3).numel ();
@@ -60,9 +60,7 @@ as double times @var{cosi} (double).  @var{rad} is numel (@var{k}) x 3.\n\
       const double nhd = args(4).double_value ();
       const NDArray cosi = cv.array_value ();
       const octave_idx_type nr = Rm.rows ();
-      if (! (nhd >= 0 && nhd < nr && nhd == static_cast<double> (static_cast<octave_idx_type> (nhd))))
-        throw std::invalid_argument ("NH must be an integer between 0 and rows (RM)");
-      const octave_idx_type nh = static_cast<octave_idx_type> (nhd);
+      const octave_idx_type nh = rt_table_step (nhd, nr);
       static_assert (sizeof (octave_int32) == sizeof (std::int32_t), "octave_int32 is an int32");
       rt_slice_rad (Rm.data (), nr, nh, reinterpret_cast<const std::int32_t *> (k.data ()),
                     a.data (), b.data (), cosi.data (), m, rad.fortran_vec ());

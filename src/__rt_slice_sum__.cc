@@ -48,7 +48,7 @@ the cached chunks @var{chunks} (a cell of structs with fields @code{h},\n\
   if (args.length () != 6)
     print_usage ();
   const octave_value& Rv = args(0);
-  if (! Rv.is_single_type () || Rv.iscomplex () || Rv.ndims () != 2 || Rv.columns () != 3)
+  if (! rt_table_ok (Rv))
     error_with_id ("lafortune:badInput", "__rt_slice_sum__: RM must be rows x 3 real singles, got %s",
                    what_of (Rv).c_str ());
   if (! args(1).iscell ())
@@ -107,9 +107,7 @@ the cached chunks @var{chunks} (a cell of structs with fields @code{h},\n\
               || ! mv.islogical () || mv.numel () != m || ! nhv.is_real_scalar ())
             throw std::invalid_argument ("chunk " + std::to_string (i + 1)
                                          + ": h, w.k (int32), w.a, w.b (single), cosi (double) must have one entry per lit sample, miss (logical) one per sample");
-          const double nhd = nhv.double_value ();
-          if (! (nhd >= 0 && nhd < nr && nhd == std::floor (nhd)))
-            throw std::invalid_argument ("NH must be an integer between 0 and rows (RM)");
+          const octave_idx_type nh = rt_table_step (nhv.double_value (), nr);
           const int32NDArray h = hv.int32_array_value ();
           const int32NDArray k = kv.int32_array_value ();
           const FloatNDArray a = av.float_array_value ();
@@ -118,7 +116,7 @@ the cached chunks @var{chunks} (a cell of structs with fields @code{h},\n\
           const boolNDArray miss = mv.bool_array_value ();
           // slice_rad, then chunk_sums: the chunk's sums added to the image
           rad.resize (3 * nl);
-          rt_slice_rad (Rm.data (), nr, static_cast<octave_idx_type> (nhd),
+          rt_slice_rad (Rm.data (), nr, nh,
                         reinterpret_cast<const std::int32_t *> (k.data ()), a.data (), b.data (),
                         cosi.data (), nl, rad.data ());
           rt_chunk_sums (npix, k0, reinterpret_cast<const std::int32_t *> (h.data ()), nl,

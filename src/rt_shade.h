@@ -15,9 +15,27 @@
 #include <octave/oct.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <stdexcept>
 #include <vector>
+
+// the slice table RM as the oct-files take it: rows x 3 real singles
+inline bool
+rt_table_ok (const octave_value& v)
+{
+  return v.is_single_type () && ! v.iscomplex () && v.ndims () == 2 && v.columns () == 3;
+}
+
+// NH, the table's step from theta_h to the next psi, as an index step
+// within its NR rows, or an exception
+inline octave_idx_type
+rt_table_step (double nhd, octave_idx_type nr)
+{
+  if (! (nhd >= 0 && nhd < nr && nhd == std::floor (nhd)))
+    throw std::invalid_argument ("NH must be an integer between 0 and rows (RM)");
+  return static_cast<octave_idx_type> (nhd);
+}
 
 // slice_rad for M lit samples: the table R (NR x 3 singles, column-major)
 // interpolated at the entries K (1-based), K+1, K+NH, K+NH+1 with the
