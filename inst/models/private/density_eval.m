@@ -1,0 +1,36 @@
+## Copyright (C) 2026 The lafortune developers
+## SPDX-License-Identifier: GPL-3.0-or-later
+
+## -*- texinfo -*-
+## @deftypefn {} {@var{p} =} density_eval (@var{M}, @var{wo}, @var{wi}, @var{j})
+## The density in solid angle of component @var{j} of the mixture @var{M}
+## (@code{density_mix}) at the directions @var{wi} (N x 3, unit, local
+## frame) given @var{wo} (private, for @code{brdf_sample} and
+## @code{brdf_pdf}): cos theta_i / pi above the horizon (0 below), (e + 1)
+## / (2 pi) cos^e of the angle to the lobe's axis (0 past 90 degrees from
+## it; log space), or the GGX half vectors' D (h) cos theta_h / (4 |wo . h|)
+## with h = (wi + wo)/|wi + wo| turned to the upper hemisphere.
+## @end deftypefn
+function p = density_eval (M, wo, wi, j)
+  switch (M.kind(j))
+    case 0
+      p = max (wi(:,3), 0) / pi;
+    case 1
+      c = sum (wi .* M.A(:,:,j), 2);
+      e = M.e(j);
+      p = zeros (rows (wi), 1);
+      ok = c > 0;
+      p(ok) = exp (log ((e + 1) / (2 * pi)) + e * log (min (c(ok), 1)));
+    case 2
+      h = wi + wo;
+      r = sqrt (sum (h .^ 2, 2));
+      p = zeros (rows (wi), 1);
+      ok = r > 1e-12;
+      h = h(ok,:) ./ r(ok);
+      ch = min (abs (h(:,3)), 1);
+      a2 = M.alpha(j) ^ 2;
+      D = a2 ./ (pi * (ch .^ 2 * (a2 - 1) + 1) .^ 2);
+      p(ok) = D .* ch ./ (4 * max (abs (sum (h .* wo(ok,:), 2)), realmin));
+      p(! isfinite (p)) = 0;
+  endswitch
+endfunction
