@@ -38,10 +38,10 @@ function p = brdf_pdf (D, wo, wi)
   for j = 1:columns (M.W)
     w = M.W(:,j);
     r = w > 0;
-    if (any (r))
-      Mj = M;
-      Mj.A = M.A(r,:,:);
-      p(r) += w(r) .* density_eval (Mj, wo(r,:), wi(r,:), j);
+    if (all (r))
+      p += w .* density_eval (M, wo, wi, j, r);
+    elseif (any (r))
+      p(r) += w(r) .* density_eval (M, wo(r,:), wi(r,:), j, r);
     endif
   endfor
 endfunction

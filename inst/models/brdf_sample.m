@@ -62,9 +62,7 @@ function [wi, p] = brdf_sample (D, wo, u)
   wi = zeros (rows (wo), 3);
   for c = unique (j).'
     r = j == c;
-    Mc = M;
-    Mc.A = M.A(r,:,:);
-    wi(r,:) = density_draw (Mc, wo(r,:), c, uu(r), min (u(r,2), 1 - eps));
+    wi(r,:) = density_draw (M, wo(r,:), c, uu(r), min (u(r,2), 1 - eps), r);
   endfor
   if (nargout > 1)
     p = brdf_pdf (D, wo, wi);

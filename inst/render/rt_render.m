@@ -75,6 +75,19 @@
 ## lights, every light.  Each gets a shadow ray into the scene's own
 ## geometry and adds f (wi, wo) cos (theta_i) times the map's radiance over
 ## the density, divided by the count (or times the light's irradiance).
+## Under an environment light option @code{"sampling"} chooses how the
+## @qcode{"light_samples"} directions are drawn: @qcode{"mis"} (the
+## default, @qcode{"auto"}): half of them (the larger half) from the map
+## as above and half from the BRDF density (@code{brdf_sample}), combined
+## by multiple importance sampling with the balance heuristic, each sample
+## weighted by the map's radiance over n_light p_light + n_brdf p_brdf;
+## @qcode{"brdf"}: all from the BRDF density; @qcode{"light"}: all from
+## the map (0.10.3's sampler, bit for bit).  The density is option
+## @code{"density"} (a model or a @code{brdf_density}), by default
+## @code{brdf_density (material)}: an analytic model's own lobes; for a
+## MERL material its field @code{sampler}, else a fit made for sampling.
+## The weights depend on the density only, so every material shaded from
+## the cache uses the measured data's density and stays unbiased.
 ## @end table
 ##
 ## Samples: the @code{scene.spp} primary rays of a pixel are stratified,
@@ -128,7 +141,9 @@
 ## render used @var{cache}; @code{rays} then counts the rays the cached
 ## trace took), @code{light_samples} (lights mode: per pixel sample, or the
 ## number of lights), @code{evaluations} (lights mode: the material's
-## evaluations) and @code{time_brdf} (their time).
+## evaluations), @code{time_brdf} (their time), @code{sampling} (the
+## sampling used) and @code{density} (the model the BRDF samples follow,
+## empty for light sampling).
 ##
 ## @example
 ## @group
@@ -166,7 +181,7 @@ function [img, info, cache] = rt_render (scene, material, varargin)
   opt = __lafortune_parse_opts__ (varargin, "rt_render",
                     struct ("mode", "auto", "progress", true, "jitter", scene_jitter (scene),
                             "chunk", 65536, "slice_size", [128 64], "cache", [],
-                            "light_samples", []));
+                            "light_samples", [], "sampling", "auto", "density", []));
   if (! ischar (opt.mode) || ! any (strcmp (opt.mode, {"auto", "slice", "direct"})))
     error ("lafortune:badOption", "rt_render: MODE must be \"auto\", \"slice\" or \"direct\"");
   endif
@@ -198,6 +213,7 @@ function [img, info, cache] = rt_render (scene, material, varargin)
   elseif (strcmp (scene.light.type, "lights"))
     ns = rows (scene.light.directions);
   endif
+  sampling = env_sampling (opt.sampling, scene, ns);
   mode = opt.mode;
   if (many)
     if (strcmp (mode, "slice"))
@@ -232,6 +248,9 @@ function [img, info, cache] = rt_render (scene, material, varargin)
       if (strcmp (scene.light.type, "environment"))
         env.D = env_dist (scene.light);
       endif
+      if (! strcmp (sampling, "light") && isempty (opt.cache))
+        env = mis_env (env, sampling, ns, material, opt.density);
+      endif
     endif
     Rm = [];
     w = whos ("material");
@@ -255,7 +274,7 @@ function [img, info, cache] = rt_render (scene, material, varargin)
   t_int = t_sh = t_shade = t_brdf = 0;
   ## the trace cache: what slice shading needs of each chunk's trace
   key = struct ("scene", scene, "jitter", logical (opt.jitter), "chunk", chunk, "slice_size", n,
-                "light_samples", ns);
+                "light_samples", ns, "sampling", sampling);
   cached = ! isempty (opt.cache);
   if (cached)
     if (strcmp (mode, "direct"))
@@ -266,7 +285,7 @@ function [img, info, cache] = rt_render (scene, material, varargin)
     if (! (isstruct (opt.cache) && isscalar (opt.cache) && isfield (opt.cache, "key")
            && isfield (opt.cache, "chunks") && isequal (opt.cache.key, key)))
       error ("lafortune:badOption",
-             "rt_render: CACHE must be the third output of rt_render for the same scene and options (jitter, chunk, slice_size, light_samples)");
+             "rt_render: CACHE must be the third output of rt_render for the same scene and options (jitter, chunk, slice_size, light_samples, sampling)");
     endif
     nshadow = opt.cache.nshadow;
   endif
@@ -408,7 +427,10 @@ function [img, info, cache] = rt_render (scene, material, varargin)
   img = reshape (acc / spp, H, W, 3);
   cache = [];
   if (keep)
-    cache = struct ("key", key, "chunks", {chunks}, "nshadow", nshadow);
+    cache = struct ("key", key, "chunks", {chunks}, "nshadow", nshadow, "density", []);
+    if (isfield (env, "S"))              # the density the weights are made with
+      cache.density = env.S.model;
+    endif
     if (lights)                        # every light sample's X in one array
       cache.rows = nrow;
       cache.X = vertcat (Xs{:});
@@ -426,10 +448,48 @@ function [img, info, cache] = rt_render (scene, material, varargin)
                  "rays", rays, "rays_per_second", rays / time_total,
                  "material_bytes", material_bytes, "slice_size", [], "spp", spp,
                  "cached", cached, "light_samples", ns, "evaluations", nevals,
-                 "time_brdf", t_brdf);
+                 "time_brdf", t_brdf, "sampling", sampling, "density", []);
+  if (isfield (env, "S"))
+    info.density = env.S.model;
+  elseif (cached && isfield (opt.cache, "density"))
+    info.density = opt.cache.density;
+  endif
   if (strcmp (mode, "slice"))
     info.slice_size = n;
   endif
+endfunction
+
+## the sampling of an environment light: OPT ("auto", "light", "brdf" or
+## "mis"); "auto" is "mis" under an environment light, "light" under a list
+## of lights or a single light (nothing to combine)
+function sampling = env_sampling (opt, scene, ns)
+  if (! ischar (opt) || ! any (strcmp (opt, {"auto", "light", "brdf", "mis"})))
+    error ("lafortune:badOption",
+           "rt_render: SAMPLING must be \"auto\", \"light\", \"brdf\" or \"mis\", got %s",
+           __lafortune_arg_str__ (opt));
+  endif
+  env = strcmp (scene.light.type, "environment");
+  if (strcmp (opt, "auto"))
+    opt = merge (env, "mis", "light");
+  elseif (! env && ! strcmp (opt, "light"))
+    error ("lafortune:badOption",
+           "rt_render: SAMPLING \"%s\" needs an environment light, got a %s light", opt,
+           scene.light.type);
+  endif
+  sampling = opt;
+endfunction
+
+## the BRDF samples of an environment light: NS split into light and BRDF
+## samples (mis: half each, the light's the larger half; brdf: all), and
+## the density (DENSITY, else the material's: brdf_density)
+function env = mis_env (env, sampling, ns, material, density)
+  env.nb = merge (strcmp (sampling, "brdf"), ns, floor (ns / 2));
+  env.nl = ns - env.nb;
+  if (isempty (density))
+    density = material;
+  endif
+  env.S = brdf_density (density);
+  env.mis = true;
 endfunction
 
 ## Lights mode: the chunks IC (whose light samples' X, stacked, are X) shaded

@@ -4,14 +4,14 @@
 ## -*- texinfo -*-
 ## @deftypefn {} {@var{wi} =} density_draw (@var{M}, @var{wo}, @var{j}, @var{u}, @var{v})
 ## Directions drawn from component @var{j} of the mixture @var{M}
-## (@code{density_mix}) for the rows @var{wo} by the uniforms @var{u},
+## (@code{density_mix}) for the rows @var{r} of @var{M}, views @var{wo}, by the uniforms @var{u},
 ## @var{v} (columns in [0, 1); private, for @code{brdf_sample}): the
 ## cosine-weighted hemisphere; a cosine power about the lobe's axis,
 ## cos alpha = (1 - u)^(1/(e+1)) (log space, so that exponents of 1e7
 ## keep their angle); or a GGX half vector, tan^2 theta_h = alpha^2 u /
 ## (1 - u), reflected: wi = 2 (wo . h) h - wo.
 ## @end deftypefn
-function wi = density_draw (M, wo, j, u, v)
+function wi = density_draw (M, wo, j, u, v, r)
   ph = 2 * pi * v;
   switch (M.kind(j))
     case 0
@@ -21,8 +21,9 @@ function wi = density_draw (M, wo, j, u, v)
       l = log1p (-u) / (M.e(j) + 1);
       ca = exp (l);
       sa = sqrt (max (-expm1 (2 * l), 0));
-      [T, B] = frame_of (M.A(:,:,j));
-      wi = (sa .* cos (ph)) .* T + (sa .* sin (ph)) .* B + ca .* M.A(:,:,j);
+      N = M.A{j}(r,:);
+      [T, B] = frame_of (N);
+      wi = (sa .* cos (ph)) .* T + (sa .* sin (ph)) .* B + ca .* N;
     case 2
       a2 = M.alpha(j) ^ 2;
       t2 = a2 * u ./ max (1 - u, realmin);

@@ -5,18 +5,18 @@
 ## @deftypefn {} {@var{p} =} density_eval (@var{M}, @var{wo}, @var{wi}, @var{j})
 ## The density in solid angle of component @var{j} of the mixture @var{M}
 ## (@code{density_mix}) at the directions @var{wi} (N x 3, unit, local
-## frame) given @var{wo} (private, for @code{brdf_sample} and
+## frame) given @var{wo}, for the rows @var{r} of @var{M} (private, for @code{brdf_sample} and
 ## @code{brdf_pdf}): cos theta_i / pi above the horizon (0 below), (e + 1)
 ## / (2 pi) cos^e of the angle to the lobe's axis (0 past 90 degrees from
 ## it; log space), or the GGX half vectors' D (h) cos theta_h / (4 |wo . h|)
 ## with h = (wi + wo)/|wi + wo| turned to the upper hemisphere.
 ## @end deftypefn
-function p = density_eval (M, wo, wi, j)
+function p = density_eval (M, wo, wi, j, r)
   switch (M.kind(j))
     case 0
       p = max (wi(:,3), 0) / pi;
     case 1
-      c = sum (wi .* M.A(:,:,j), 2);
+      c = sum (wi .* M.A{j}(r,:), 2);
       e = M.e(j);
       p = zeros (rows (wi), 1);
       ok = c > 0;

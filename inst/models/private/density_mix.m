@@ -12,29 +12,29 @@
 ## lobe's integral, log space), for the other types a GGX half-vector
 ## distribution.  Fields: @code{W} (N x nc, rows summing to 1),
 ## @code{kind} (1 x nc: 0 cosine, 1 cosine power, 2 GGX), @code{e},
-## @code{alpha} (1 x nc), @code{A} (N x 3 x nc, the power lobes' axes).
+## @code{alpha} (1 x nc), @code{A} (1 x nc cell: the power lobes' axes, N x 3).
 ## A row with no weight (a black model) samples the cosine alone.
 ## @end deftypefn
 function M = density_mix (P, wo)
   n = rows (wo);
   if (P.lafortune)
     nc = numel (P.e);
-    A = zeros (n, 3, nc);
+    A = cell (1, nc);
     lw = -Inf (n, nc);
     for j = 1:nc
       a = [P.cxy(j) * wo(:,1:2), P.cz(j) * wo(:,3)];
       r = sqrt (sum (a .^ 2, 2));
+      A{j} = a ./ max (r, realmin);
       ok = r > 0;
-      A(ok,:,j) = a(ok,:) ./ r(ok);
       e = P.e(j);
-      lw(ok,j) = e * log (r(ok)) + log (2 * pi / (e + 1)) + log (max (A(ok,3,j), 0.05)) - log (3);
+      lw(ok,j) = e * log (r(ok)) + log (2 * pi / (e + 1)) + log (max (A{j}(ok,3), 0.05)) - log (3);
     endfor
     kind = [0, ones(1, nc)];
     e = [0, P.e];
     alpha = zeros (1, nc + 1);
   else
     nc = numel (P.wk);
-    A = zeros (n, 3, nc);
+    A = cell (1, nc);
     lw = repmat (log (P.wk), n, 1);
     kind = [0, 2 * ones(1, nc)];
     e = zeros (1, nc + 1);
@@ -48,5 +48,5 @@ function M = density_mix (P, wo)
   mx(dead) = 0;
   W = exp (lw - mx);
   W ./= sum (W, 2);
-  M = struct ("W", W, "kind", kind, "e", e, "alpha", alpha, "A", cat (3, zeros (n, 3), A));
+  M = struct ("W", W, "kind", kind, "e", e, "alpha", alpha, "A", {[{[]}, A]});
 endfunction

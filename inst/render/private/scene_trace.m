@@ -25,7 +25,8 @@
 ## (@code{scene.light.type} @qcode{"environment"} or @qcode{"lights"}) the
 ## light of each hit comes from @code{light_samples} for the pixel samples
 ## @var{k} (@var{env}: @code{D}, the distribution of @code{env_dist}, and
-## @code{ns}, samples per pixel sample), and @var{T} has instead of
+## @code{ns}, samples per pixel sample; or, with @code{env.mis} true,
+## @code{mis_samples}: the map's and the BRDF density's samples), and @var{T} has instead of
 ## @code{L}, @code{cosi}, @code{E} and @code{lit} the field @code{S}: one
 ## row per light sample that reaches a hit (above the shading and the
 ## geometric surface, its shadow ray unblocked), @code{own} (the hit,
@@ -90,7 +91,11 @@ endfunction
 
 ## the light samples of the hits, their cosines and their shadow rays
 function [T, t_sh] = sample_lights (objs, scene, k, env, h, P, Ng, Ns, Vw, epsilon)
-  [L, wt, own] = light_samples (scene.light, env.D, k(h), env.ns, scene.seed);
+  if (isfield (env, "mis") && env.mis)
+    [L, wt, own] = mis_samples (env, k(h), scene.seed, Ns, Vw);
+  else
+    [L, wt, own] = light_samples (scene.light, env.D, k(h), env.ns, scene.seed);
+  endif
   cosi = sum (Ns(own,:) .* L, 2);
   coso = sum (Ns(own,:) .* Vw(own,:), 2);
   ok = find (cosi > 0 & coso > 0 & sum (Ng(own,:) .* L, 2) > 0);
