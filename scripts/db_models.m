@@ -10,13 +10,15 @@
 ## @var{mats}); @var{X}: the measures, @code{X.flip.verdict.METHOD}
 ## (materials x lobes: the measure every verdict is made on, held out when
 ## there are held-out lights), @code{X.deltae.verdict},
-## @code{X.psnr.verdict}.
+## @code{X.psnr.verdict}, and @code{X.noise} (materials x 1: the
+## verdicts' noise floor, db_summary).
 ##
 ## Each model type of MODELS is fitted by every method of METHODS
 ## (repro_method); a model's fit of a material at a lobe count is its
 ## best over those methods by the verdict's measure (repro_models).
 ## @var{S} gives per material the best model at each lobe count
-## (@code{best}); per model and lobe count (@code{per_model}) the numbers a
+## (@code{best}, with @code{tied}: the models within the material's noise
+## floor of it, repro_models); per model and lobe count (@code{per_model}) the numbers a
 ## model holds (the fit record's @code{params}: its type's fields) and
 ## their bytes as doubles beside the median size of the JSON file, the
 ## median FLIP over all materials, over the metals (METALS) and over the
@@ -24,13 +26,14 @@
 ## is the best, and how often its unconstrained fit reflects more than it
 ## receives (the record's @code{albedo} above 1: brdf_fit reports it for
 ## the physically based types, not for Lafortune's); where the Lafortune
-## model loses (another model's best FLIP lower than Lafortune's), by how
+## model loses (another model's best FLIP lower than Lafortune's by more
+## than the noise floor: within it they tie), by how
 ## much (@code{lafortune_loses}) and how often (@code{loses}), and
 ## Lavoué et al.'s split (@code{split}: GGX better on the metals only).
 ## @end deftypefn
 function S = db_models (c, D, ok, mats, X)
   nk = numel (c.lobes);
-  [M, B] = repro_models (c, X.flip.verdict);
+  [M, B] = repro_models (c, X.flip.verdict, X.noise);
   metal = ismember (mats, c.metals);
   metal = metal(:);
   isok = false (numel (mats), 1);
@@ -45,7 +48,8 @@ function S = db_models (c, D, ok, mats, X)
   endif
   for i = ok
     S.best{end+1} = struct ("material", mats{i}, "metal", metal(i), "model", {B.model(i,:)},
-                            "method", {B.method(i,:)}, "flip", B.flip(i,:));
+                            "method", {B.method(i,:)}, "flip", B.flip(i,:), "tied", {B.tied(i,:)},
+                            "noise_flip", X.noise(i));
   endfor
   for t = 1:numel (M)
     S.per_model.(M(t).model) = per_model (c, D, ok, X, M(t), B, metal, isok);
@@ -56,7 +60,7 @@ function S = db_models (c, D, ok, mats, X)
     return;
   endif
   A = M(la);
-  lose = isok & (B.flip < A.flip);      # materials x lobes
+  lose = isok & (B.flip < A.flip) & ! repro_tie (B.flip, A.flip, X.noise(:));  # materials x lobes
   S.loses = struct ("all", sum (lose, 1), "metals", sum (lose(metal,:), 1), "nonmetals", sum (lose(! metal,:), 1));
   g = find (strcmp ({M.model}, "ggx"));
   if (! isempty (g))

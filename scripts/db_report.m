@@ -16,7 +16,9 @@
 ## rendered by the same renderer (img_compare) in the scene's own light
 ## (in-sample for the scene fits), the same four as means over the
 ## held-out lights of JUDGE (@code{_heldout}, repro_judge) and the FLIP
-## under each of them (@code{flip_heldout_LIGHT}), errors (rmse, log rmse
+## under each of them (@code{flip_heldout_LIGHT}), the noise floor of
+## those verdicts (@code{flip_heldout_noise}: the FLIP between two renders
+## of the measured data, the mean over the lights), errors (rmse, log rmse
 ## and cosine-weighted rmse as Ngan et al. 2005, means over R, G, B, on
 ## each method's table), fit time, render times, the model's size
 ## (@code{params}: the numbers it holds, @code{json_bytes}: its JSON
@@ -62,7 +64,7 @@ function db_report ()
                  c.fail_flip, repro_files ("fig_flip_lobes", c.results, ""));
   repro_save (repro_files ("report", c.results, ""), report_fill ("report_database", db_view (sm)));
   repro_save (repro_files ("summary", c.results, ""), sm);
-  write_gallery (c, D, X.psnr.pov, X.flip.pov, X.deltae.pov, X.flip.heldout);
+  write_gallery (c, D, X.psnr.pov, X.flip.pov, X.deltae.pov, X.flip.heldout, X.noise);
   printf ("database: %d materials (%d failed): %s\n", numel (c.materials), numel (sm.failed),
           repro_files ("report", c.results, ""));
 endfunction
@@ -117,7 +119,7 @@ function write_table (c, D, X)
     head = [head, strcat({"rmse_", "log_rmse_", "cos_rmse_"}, t{1})];
   endfor
   head = [head, {"flip_heldout", "deltae_heldout", "psnr_heldout", "hue_heldout"}, ...
-          strcat("flip_heldout_", regexprep ({c.judge.name}, "[^A-Za-z0-9]+", "_"))];
+          strcat("flip_heldout_", regexprep ({c.judge.name}, "[^A-Za-z0-9]+", "_")), {"flip_heldout_noise"}];
   head = [head, {"fit_time_s", "render_time_s", "measured_render_time_s", "params", "json_bytes", ...
                  "albedo_max", "rho_d_r", "rho_d_g", "rho_d_b"}];
   chn = "rgb";
@@ -178,10 +180,11 @@ endfunction
 
 ## the held-out cells of table.csv of method M's fit at lobe slot J of
 ## material I: mean FLIP, dE, PSNR, hue over the NJ lights, then each
-## light's FLIP ("" without held-out lights or record)
+## light's FLIP, then the material's noise floor ("" without held-out
+## lights or record)
 function v = heldout_cells (X, m, i, j, nj)
   v = {X.flip.heldout.(m)(i,j), X.deltae.heldout.(m)(i,j), X.psnr.heldout.(m)(i,j), X.hue.heldout.(m)(i,j)};
-  v = [v, num2cell(reshape (X.flip.light.(m)(i,j,:), 1, nj))];
+  v = [v, num2cell(reshape (X.flip.light.(m)(i,j,:), 1, nj)), {X.noise(i)}];
   v(cellfun (@(x) isnan (x), v)) = {""};
 endfunction
 
@@ -296,7 +299,10 @@ function ly = spread (y, gap, yl)
   ly(o) = ys;
 endfunction
 
-function write_gallery (c, D, P, F, E, H0)
+## gallery/index.html: per material its sheets, each method's in-sample
+## PSNR, FLIP, dE (P, F, E) and held-out FLIP H0, and the noise floor N0
+## of the held-out verdicts
+function write_gallery (c, D, P, F, E, H0, N0)
   H = {"<!DOCTYPE html>", "<html><head><meta charset=\"utf-8\"><title>lafortune: contact sheets</title>", ...
        "<style>body{font-family:sans-serif} img{max-width:100%} .err{color:#a00}</style></head><body>", ...
        "<h1>Measured render and Lafortune fits, per material</h1>", "<ul>"};
@@ -321,6 +327,8 @@ function write_gallery (c, D, P, F, E, H0)
     H{end+1} = sprintf ("<img src=\"../%s/%s\" alt=\"%s\">", repro_files ("db_material", "", D(i).material),
                         D(i).rec.sheet.file, D(i).material);
     if (isfield (D(i).rec.sheet, "heldout_file") && ! isempty (D(i).rec.sheet.heldout_file))
+      H{end+1} = sprintf (["<p>Held out: the noise floor of these verdicts (FLIP between two renders of the " ...
+                           "measured data, mean over the lights) is %.3f; fits closer than that tie.</p>"], N0(i));
       H{end+1} = sprintf ("<img src=\"../%s/%s\" alt=\"%s, held out\">", repro_files ("db_material", "", D(i).material),
                           D(i).rec.sheet.heldout_file, D(i).material);
     endif

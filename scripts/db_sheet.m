@@ -17,10 +17,13 @@
 ## sheet's title says.  With held-out lights (JUDGE), a second sheet
 ## RESULTS/sheet/MATERIAL-heldout.png shows the same fits rendered by
 ## rt_render under JUDGE's first light (repro_judge), titled with the
-## held-out FLIP, PSNR and dE under that light.  @var{R}: @code{file}
-## (the PNG's name, relative to RESULTS), @code{exposure} (stops),
-## @code{heldout_file} ("" without held-out lights) and
-## @code{heldout_light}.
+## held-out FLIP, PSNR and dE under that light, its measured render
+## titled with the noise floor under that light (repro_judge's
+## @code{noise_flip}: the FLIP between two renders of the measured data;
+## fits closer than that tie).  @var{R}: @code{file} (the PNG's name,
+## relative to RESULTS), @code{exposure} (stops), @code{heldout_file} (""
+## without held-out lights), @code{heldout_light} and
+## @code{heldout_noise_flip} (NaN without held-out lights).
 ## @end deftypefn
 function R = db_sheet (material)
   c = repro_config ();
@@ -35,14 +38,16 @@ function R = db_sheet (material)
                  sprintf ("%s: in the light the scene fits were made for (in-sample), POV-Ray", material),
                  repro_files ("sheet_png", c.results, material));
   R = struct ("file", repro_files ("sheet_png", "", material), "exposure", stops,
-              "heldout_file", "", "heldout_light", "");
+              "heldout_file", "", "heldout_light", "", "heldout_noise_flip", NaN);
   if (! isempty (judge.lights))
     light = judge.lights(1).label;
     ref = exrread ([repro_files("judge_measured", c.results, material) ".exr"]);
     get = @(mth, k) exrread ([repro_files("judge_render", c.results, material, mth, k) ".exr"]);
+    R.heldout_noise_flip = num (judge, "noise_flip");
     sheet (c, judge, ref, get, {"psnr", "flip", "deltae"},
            sprintf ("%s: held out, under %s (no fit was made for it), rt_render", material, light),
-           repro_files ("sheet_heldout_png", c.results, material));
+           repro_files ("sheet_heldout_png", c.results, material),
+           sprintf ("measured, noise FLIP %.3f", R.heldout_noise_flip));
     R.heldout_file = repro_files ("sheet_heldout_png", "", material);
     R.heldout_light = light;
   endif
@@ -51,8 +56,9 @@ endfunction
 ## One contact sheet into FILE: the measured render REF first in each row,
 ## then each method's fits GET (method, k), titled with the record REC's
 ## measures Q (PSNR, FLIP, dE; the first of a per-light row: the sheet's
-## light) and the sheet's heading TTL; returns the exposure (stops)
-function stops = sheet (c, rec, ref, get, Q, ttl, file)
+## light), the sheet's heading TTL and the measured render's title MTTL;
+## returns the exposure (stops)
+function stops = sheet (c, rec, ref, get, Q, ttl, file, mttl = "measured")
   [rgb, stops] = img_tonemap (ref, "auto");
   ## the methods' rows, and the published fit's (one lobe) when it was rendered
   rows_ = c.methods;
@@ -91,7 +97,7 @@ function stops = sheet (c, rec, ref, get, Q, ttl, file)
     for j = 0:numel (lobes{i})
       pos = [j * pw / W + 0.003, y + 0.003, pw / W - 0.006, ph / H - 0.006];
       if (j == 0)
-        show (pos, rgb, "measured");
+        show (pos, rgb, mttl);
       else
         img = get (mth, lobes{i}(j));
         r = rec.(mth)(j);

@@ -15,7 +15,13 @@
 ## holds every measure, materials x lobes per renderer and method
 ## (@code{X.flip.pov.scene}; @code{heldout}, the means over JUDGE's
 ## lights, @code{light}, each light's, and @code{verdict}, the measure
-## every verdict is made on), for table.csv and the plots.
+## every verdict is made on; @code{X.noise}, materials x 1, the verdicts'
+## noise floor: repro_judge's FLIP between two renders of the measured
+## data, the mean over the lights, NaN without them; @code{X.noise_light},
+## materials x lights), for table.csv and the plots.  Two fits of a
+## material whose verdicts differ by no more than its floor tie
+## (repro_tie): the published baseline, the best model, where Lafortune
+## loses and the FLIP rises say so rather than rank them.
 ## @end deftypefn
 function [sm, X] = db_summary (c, D)
   mats = c.materials;
@@ -55,7 +61,8 @@ function [sm, X] = db_summary (c, D)
   sm.hue_rt = X.hue.rt;
   sm.verdict = X.verdict;
   sm.heldout = struct ("lights", {{c.judge.label}}, "flip", X.flip.heldout, "deltae", X.deltae.heldout,
-                       "psnr", X.psnr.heldout, "hue", X.hue.heldout);
+                       "psnr", X.psnr.heldout, "hue", X.hue.heldout, "noise_flip", X.noise_light,
+                       "noise_flip_mean", X.noise, "noise", noise_stats (c, ok, X));
   scene = repro_scene (c);
   sm.settings = struct ("scene", scene.name, "width", scene.width, "height", scene.height,
                         "spp", scene.spp, "pov_antialias", c.pov_aa, "max_angle", c.max_angle,
@@ -121,6 +128,17 @@ function X = measures (c, D, ok)
     endfor
     X.(q{1}).verdict = X.(q{1}).(merge (nj > 0, "heldout", "pov"));
   endfor
+  ## the verdicts' noise floor: two renders of the measured data (NaN where
+  ## the record has none: JUDGE empty, or a record older than the floor)
+  X.noise = nan (n, 1);
+  X.noise_light = nan (n, nj);
+  for i = ok
+    J = D(i).rec.judge;
+    if (nj > 0 && isfield (J, "noise_flip") && isnumeric (J.noise_flip) && numel (J.noise_flip) == nj)
+      X.noise_light(i,:) = J.noise_flip(:)';
+      X.noise(i) = mean (X.noise_light(i,:));
+    endif
+  endfor
   if (nj > 0)
     X.verdict = sprintf ("held-out FLIP (the mean over %s, rt_render; no fit was made for these lights)",
                          strjoin ({c.judge.label}, ", "));
@@ -171,7 +189,8 @@ endfunction
 ## against the recommended method's 1-lobe fit, on the verdicts' measure
 function S = published (c, D, ok, X)
   S = struct ("materials", {{}}, "flip", [], "psnr", [], "deltae", [], "hue", [], "flip_in_sample", [],
-              "recommended_flip", [], "recommended_psnr", [], "recommended_better", NaN, "not_better", {{}});
+              "recommended_flip", [], "recommended_psnr", [], "recommended_better", NaN, "not_better", {{}},
+              "tied", {{}}, "noise_flip", []);
   has = ok(arrayfun (@(i) isfield (D(i).rec.render_fits, "ngan2005"), ok));
   if (isempty (has))
     return;
@@ -181,16 +200,32 @@ function S = published (c, D, ok, X)
     S.(q{1}) = X.(q{1}).verdict.ngan2005(has,1)';
   endfor
   S.flip_in_sample = X.flip.pov.ngan2005(has,1)';
+  S.noise_flip = X.noise(has)';
   rec = "general";
   j1 = find (c.lobes == 1, 1);
   if (any (strcmp (c.methods, rec)) && ! isempty (j1))
     S.recommended_flip = X.flip.verdict.(rec)(has,j1)';
     S.recommended_psnr = X.psnr.verdict.(rec)(has,j1)';
-    win = S.recommended_flip < S.flip;
+    ## within the material's noise floor: a tie, neither better
+    tie = repro_tie (S.recommended_flip, S.flip, X.noise(has)');
+    win = S.recommended_flip < S.flip & ! tie;
     S.recommended_better = sum (win);
-    S.not_better = c.materials(has(! win));
+    S.tied = c.materials(has(tie));
+    S.not_better = c.materials(has(! win & ! tie));
     S.medians = struct ("flip", median (S.flip), "recommended_flip", median (S.recommended_flip),
                         "psnr", median (S.psnr), "recommended_psnr", median (S.recommended_psnr));
+  endif
+endfunction
+
+## the noise floor over the processed materials OK: its median, its
+## largest and that material (NaN, "" without a floor)
+function S = noise_stats (c, ok, X)
+  S = struct ("median", NaN, "max", NaN, "max_material", "");
+  x = X.noise(ok);
+  if (any (isfinite (x)))
+    S.median = median (x(isfinite (x)));
+    [S.max, im] = max (x);
+    S.max_material = c.materials{ok(im)};
   endif
 endfunction
 

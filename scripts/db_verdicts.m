@@ -23,22 +23,29 @@
 ## more lobes do not help (@code{fails_flat}, @code{fails_flat_change}),
 ## where one more lobe renders worse (@code{falls}, @code{falls_steps},
 ## @code{largest_flip_rise}; the same in-sample, @code{falls_in_sample}).
+## A rise of the verdicts' FLIP counts only where it exceeds the material's
+## noise floor too (@code{X.noise}, db_summary: two renders of the measured
+## data; within it the two lobe counts tie, repro_tie).
 ## @end deftypefn
 function S = db_verdicts (c, ok, X, what, m, S)
   V = X.flip.verdict;
+  ## the least rise that counts, per material: FAIL_FLIP_DROP, or the noise
+  ## floor of the verdicts where larger (in-sample: no floor)
+  lim = max (c.fail_flip_drop, X.noise(:));
+  lim_p = repmat (c.fail_flip_drop, numel (c.materials), 1);
   switch (what)
     case "rises"
       rec = "general";                    # the recommended method
       S = struct ("method", rec, "verdict", {{}}, "largest_rise", NaN, "in_sample", {{}},
                   "verdict_steps", {{}}, "in_sample_steps", {{}});
       if (any (strcmp (c.methods, rec)))
-        [up, rise] = falls_of (V.(rec), ok, c.fail_flip_drop);
-        [up_p, rise_p] = falls_of (X.flip.pov.(rec), ok, c.fail_flip_drop);
+        [up, rise] = falls_of (V.(rec), ok, lim);
+        [up_p, rise_p] = falls_of (X.flip.pov.(rec), ok, lim_p);
         S.verdict = c.materials(up);
         S.largest_rise = max ([rise; 0]);
         S.in_sample = c.materials(up_p);
-        S.verdict_steps = steps_of (c, up, V.(rec), X.psnr.verdict.(rec));
-        S.in_sample_steps = steps_of (c, up_p, X.flip.pov.(rec), X.psnr.pov.(rec));
+        S.verdict_steps = steps_of (c, up, V.(rec), X.psnr.verdict.(rec), lim);
+        S.in_sample_steps = steps_of (c, up_p, X.flip.pov.(rec), X.psnr.pov.(rec), lim_p);
       endif
     case "fails"
       S = fails (c, ok, X, m);
@@ -48,8 +55,8 @@ function S = db_verdicts (c, ok, X, what, m, S)
       gain = V.(m)(ok,1) - V.(m)(ok,end);
       high = ok(best > c.fail_flip);
       flat = ok(! (gain >= c.fail_flip_gain) & nk > 1);
-      [falls, rise] = falls_of (V.(m), ok, c.fail_flip_drop);
-      [falls_rt, rise_rt] = falls_of (X.flip.pov.(m), ok, c.fail_flip_drop);
+      [falls, rise] = falls_of (V.(m), ok, lim);
+      [falls_rt, rise_rt] = falls_of (X.flip.pov.(m), ok, lim_p);
       S.fails_high = c.materials(high);
       S.fails_flat = c.materials(flat);
       S.falls = c.materials(falls);
@@ -58,8 +65,8 @@ function S = db_verdicts (c, ok, X, what, m, S)
       S.largest_flip_rise_in_sample = max ([rise_rt; 0]);
       S.fails_high_flip = min (V.(m)(high,:), [], 2)';
       S.fails_flat_change = (V.(m)(flat,end) - V.(m)(flat,1))';
-      S.falls_steps = steps_of (c, falls, V.(m), X.psnr.verdict.(m));
-      S.falls_in_sample_steps = steps_of (c, falls_rt, X.flip.pov.(m), X.psnr.pov.(m));
+      S.falls_steps = steps_of (c, falls, V.(m), X.psnr.verdict.(m), lim);
+      S.falls_in_sample_steps = steps_of (c, falls_rt, X.flip.pov.(m), X.psnr.pov.(m), lim_p);
   endswitch
 endfunction
 
@@ -102,23 +109,24 @@ function out = fails (c, ok, X, lm)
 endfunction
 
 ## The materials (indices into OK) whose FLIP X (materials x lobes) rises
-## by more than LIMIT with one more lobe, and every material's largest rise
+## by more than their LIMIT (materials x 1) with one more lobe, and every
+## material's largest rise
 function [falls, rise] = falls_of (X, ok, limit)
   rise = zeros (numel (ok), 1);
   if (columns (X) > 1)
     rise = max (diff (X(ok,:), 1, 2), [], 2);
   endif
-  falls = ok(rise > limit);
+  falls = ok(rise > limit(ok));
 endfunction
 
-## the materials IDX with their steps where FLIP F rises by more than
-## FAIL_FLIP_DROP, each with the change of FLIP and of PSNR P
-function out = steps_of (c, idx, F, P)
+## the materials IDX with their steps where FLIP F rises by more than their
+## LIMIT (materials x 1), each with the change of FLIP and of PSNR P
+function out = steps_of (c, idx, F, P, limit)
   out = {};
   for i = idx(:)'
     d = diff (F(i,:));
     st = {};
-    for j = find (d > c.fail_flip_drop)
+    for j = find (d > limit(i))
       st{end+1} = struct ("from", c.lobes(j), "to", c.lobes(j+1), "flip", d(j), "psnr", P(i,j+1) - P(i,j));
     endfor
     out{end+1} = struct ("material", c.materials{i}, "steps", {st});

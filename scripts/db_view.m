@@ -26,6 +26,7 @@ function V = db_view (sm)
   V.fig_psnr = repro_files ("fig_psnr_lobes", "", "");
   V.fig_flip = repro_files ("fig_flip_lobes", "", "");
   V.verdict_short = merge (isempty (st.judge), "in-sample FLIP", "held-out FLIP");
+  V.has_noise = isfinite (sm.heldout.noise.median);
   ## the summary across materials, one row per method and lobe count
   V.summary_rows = struct ([]);
   for m = st.methods
@@ -79,11 +80,12 @@ function V = published_view (V, sm)
   V.n_published = numel (P.materials);
   V.has_recommended_1 = ! isempty (P.recommended_flip);
   V.has_not_better = ! isempty (P.not_better);
+  V.has_tied = ! isempty (P.tied);
   V.published_rows = struct ([]);
   for n = 1:numel (P.materials)
     r = struct ("material", P.materials{n}, "psnr", P.psnr(n), "flip", P.flip(n), "deltae", P.deltae(n),
                 "hue", P.hue(n), "flip_in_sample", P.flip_in_sample(n), "recommended_psnr", NaN,
-                "recommended_flip", NaN);
+                "recommended_flip", NaN, "noise_flip", P.noise_flip(n));
     if (V.has_recommended_1)
       r.recommended_psnr = P.recommended_psnr(n);
       r.recommended_flip = P.recommended_flip(n);
@@ -103,8 +105,11 @@ function V = models_view (V, sm)
   V.best_rows = struct ([]);
   for b = S.best
     x = b{1};
+    ## the models tied with the best (within the noise floor), "" for none
+    tie = x.tied;
+    tie(cellfun (@(t) ! any (t == ","), tie)) = {""};
     cells = struct ("has", num2cell (! isnan (x.flip)), "model", x.model, "flip", num2cell (x.flip),
-                    "method", x.method);
+                    "method", x.method, "tie", tie);
     V.best_rows = [V.best_rows, struct("material", x.material, "metal", x.metal, "cells", cells)];
   endfor
   V.model_rows = struct ([]);

@@ -15,7 +15,8 @@
 ## the recommended fit; scene: the fit for this very light, so in-sample),
 ## with FLIP-map insets, PSNR and FLIP;
 ## @item heldout-MATERIAL.png: the same under JUDGE's first light, which no
-## fit was made for (repro_judge's rt_render renders);
+## fit was made for (repro_judge's rt_render renders), its title with the
+## noise floor under that light (two renders of the measured data);
 ## @item polar-MATERIAL.png (plot_polar): data and the 3-lobe in-plane fit
 ## in the plane of incidence at theta_i = 15, 30, 45, 60 degrees (log radius:
 ## the grazing lobes would hide the others);
@@ -74,8 +75,8 @@ function repro_figures ()
       ref = exrread ([repro_files("judge_measured", c.results, mat) ".exr"]);
       renders_figure (c, mat, ref, @(m, k) repro_files ("judge_render", c.results, mat, m, k),
                       @(m, j) J.(m)(j).psnr(1),
-                      sprintf ("%s: held out, under %s (no fit was made for it), rt_render",
-                               mat, J.lights(1).label),
+                      sprintf ("%s: held out, under %s (no fit was made for it), rt_render; noise FLIP %.3f",
+                               mat, J.lights(1).label, noise (J)),
                       repro_files ("fig_heldout", c.results, mat), false);
     endif
     Fi = jsondecode (fileread (repro_files ("fit", c.results, mat)));
@@ -159,6 +160,15 @@ function renders_figure (c, mat, ref, file, psnr, ttl, out, paper_on)
                       "rows", cellfun (@row_name, mths, "uniformoutput", false),
                       "width", min (256, max (180, columns (ref))),   # the paper's 256: 1:1
                       "title", ttl, "file", out));
+endfunction
+
+## the noise floor under the first light of judge record J (repro_judge:
+## the FLIP between two renders of the measured data), NaN when it has none
+function f = noise (J)
+  f = NaN;
+  if (isfield (J, "noise_flip") && ! isempty (J.noise_flip))
+    f = J.noise_flip(1);
+  endif
 endfunction
 
 function s = row_name (m)

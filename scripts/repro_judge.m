@@ -14,11 +14,21 @@
 ## rendered from that render's cache (the same samples, only the BRDF
 ## evaluated again) and compared with it by img_compare.  The renders under
 ## the first light are written as RESULTS/judge/MATERIAL-measured.exr and
-## MATERIAL-METHOD-K.exr, for the held-out contact sheets.
+## MATERIAL-METHOD-K.exr, for the held-out contact sheets.  The noise floor
+## of every verdict: under each light the measured data rendered a second
+## time with the next seed (scene.seed + 1, the same scene otherwise) and
+## compared with the first render (img_compare's FLIP): two fits whose
+## held-out FLIP differs by no more than that cannot be told apart (the
+## reports call them tied, repro_tie).  A deterministic render (a
+## directional light without jitter) may give a floor of 0.
 ##
 ## @var{R}: @code{lights} (struct array: @code{name}, @code{label},
-## @code{type}; empty with JUDGE empty), @code{time_measured} and
-## @code{time_fits} (seconds, over the lights), and per method a struct
+## @code{type}; empty with JUDGE empty), @code{time_measured},
+## @code{time_noise} (the second renders of the measured data) and
+## @code{time_fits} (seconds, over the lights), @code{noise_flip} (1 x
+## lights: the FLIP between the two renders of the measured data) and
+## @code{noise_flip_mean} (its mean over the lights, the floor of the
+## verdict; NaN with JUDGE empty), and per method a struct
 ## array (one per lobe count of LOBES) with @code{lobes}, @code{flip},
 ## @code{deltae}, @code{psnr}, @code{hue} (1 x lights) and their means
 ## over the lights, @code{flip_mean}, @code{deltae_mean}, @code{psnr_mean},
@@ -30,7 +40,8 @@ function R = repro_judge (material)
   nl = numel (J);
   R = struct ("material", material, "lights", struct ("name", {J.name}, "label", {J.label},
                                                      "type", {J.type}),
-              "time_measured", 0, "time_fits", 0);
+              "time_measured", 0, "time_noise", 0, "time_fits", 0,
+              "noise_flip", nan (1, nl), "noise_flip_mean", NaN);
   models = repro_fits (c, material);
   q = {"flip", "deltae", "psnr", "hue"};
   for method = fieldnames (models)'
@@ -51,12 +62,14 @@ function R = repro_judge (material)
     return;
   endif
   b = repro_merl (c, material);
+  b.sampler = judge_density (models);
   d = fileparts (repro_files ("judge_measured", c.results, material));
   repro_mkdir (d);
   for l = 1:nl
     scene = judge_scene (c, J(l));
-    printf ("reproduce: [%s] held-out light %s: the measured data (rt_render, %d x %d, %d spp)\n",
-            material, J(l).label, scene.width, scene.height, scene.spp);
+    printf (["reproduce: [%s] held-out light %s: the measured data (rt_render, %d x %d, %d spp), " ...
+             "twice (seeds %d and %d: the noise floor)\n"],
+            material, J(l).label, scene.width, scene.height, scene.spp, scene.seed, scene.seed + 1);
     fflush (stdout);
     t0 = tic ();
     [ref, ~, cache] = rt_render (scene, b, "progress", false);
@@ -64,6 +77,9 @@ function R = repro_judge (material)
     if (l == 1)
       exrwrite ([repro_files("judge_measured", c.results, material) ".exr"], ref);
     endif
+    t0 = tic ();
+    R.noise_flip(l) = noise_floor (scene, b, ref);
+    R.time_noise += toc (t0);
     t0 = tic ();
     done = {};
     for method = fieldnames (models)'
@@ -87,6 +103,9 @@ function R = repro_judge (material)
     endif
     R.time_fits += toc (t0);
   endfor
+  R.noise_flip_mean = mean (R.noise_flip);
+  printf ("reproduce: [%s] held-out noise floor (FLIP between two renders of the measured data): %s, mean %.4g\n",
+          material, mat2str (R.noise_flip, 4), R.noise_flip_mean);
   for method = fieldnames (models)'
     mth = method{1};
     for j = 1:numel (R.(mth))
@@ -99,10 +118,36 @@ function R = repro_judge (material)
   endfor
 endfunction
 
+## the density the measured data's BRDF samples are drawn from under an
+## environment light (rt_render's multiple importance sampling): the
+## general fit of the most lobes, else the last fit of any method, else
+## none (brdf_density then makes a fit for sampling)
+function m = judge_density (models)
+  m = [];
+  f = fieldnames (models);
+  f = [f(strcmp (f, "general")); f(! strcmp (f, "general") & ! strcmp (f, "ngan2005"))];
+  for i = 1:numel (f)
+    k = find (! cellfun (@isempty, models.(f{i})), 1, "last");
+    if (! isempty (k))
+      m = models.(f{i}){k};
+      return;
+    endif
+  endfor
+endfunction
+
 ## the record's index of method MTH's K-lobe fit: its place in LOBES (the
 ## published fit has one)
 function j = slot (c, mth, k)
   j = merge (strcmp (mth, "ngan2005"), 1, find (c.lobes == k));
+endfunction
+
+## the noise floor of the verdicts under SCENE: the FLIP between REF (the
+## measured data B rendered in SCENE) and B rendered again with the next
+## seed, from no cache (other samples: with jitter, other places in the
+## pixels and other light samples)
+function f = noise_floor (scene, b, ref)
+  scene.seed += 1;
+  f = img_compare (ref, rt_render (scene, b, "progress", false)).flip;
 endfunction
 
 ## the pipeline's scene lit by the held-out light L

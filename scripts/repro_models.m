@@ -3,6 +3,7 @@
 
 ## -*- texinfo -*-
 ## @deftypefn {} {[@var{M}, @var{B}] =} repro_models (@var{c}, @var{F})
+## @deftypefnx {} {[@var{M}, @var{B}] =} repro_models (@var{c}, @var{F}, @var{floor})
 ## The models compared, for the reports of `make reproduce` and `make
 ## database`: the model types that the methods of @var{c} (repro_config)
 ## fit, and each one's best fit per material and lobe count.  @var{F} has
@@ -17,15 +18,25 @@
 ## it; "" where none).  @var{B}: the best model per material and lobe
 ## count over all of them, @code{flip}, @code{model}, @code{method} (same
 ## sizes).  Ties go to the first model, then the first method.
+## @code{B.tied} (same size): the models whose best FLIP is within the
+## noise floor @var{floor} (materials x 1, repro_judge's
+## @code{noise_flip_mean}; NaN or absent: none measured) of the best,
+## the best first, then the others in the order of @var{M}, joined by
+## ", " (repro_tie): where it names more than one, the reports say these
+## tie rather than name a best.
 ## @end deftypefn
-function [M, B] = repro_models (c, F)
+function [M, B] = repro_models (c, F, floor)
   P = cellfun (@repro_method, c.methods);
   types = unique ([c.models(:)', {P.model}], "stable");
   types = types(ismember (types, {P.model}));
   n = rows (F.(c.methods{1}));
   nk = numel (c.lobes);
   M = struct ("model", types, "title", "", "methods", {{}}, "flip", [], "method", {{}});
-  B = struct ("flip", nan (n, nk), "model", {repmat({""}, n, nk)}, "method", {repmat({""}, n, nk)});
+  if (nargin < 3)
+    floor = nan (n, 1);
+  endif
+  B = struct ("flip", nan (n, nk), "model", {repmat({""}, n, nk)}, "method", {repmat({""}, n, nk)},
+              "tied", {repmat({""}, n, nk)});
   for t = 1:numel (types)
     M(t).title = brdf_model (types{t}).title;
     M(t).methods = c.methods(strcmp ({P.model}, types{t}));
@@ -41,5 +52,11 @@ function [M, B] = repro_models (c, F)
     B.flip(better) = M(t).flip(better);
     B.model(better) = types(t);
     B.method(better) = M(t).method(better);
+  endfor
+  ## the models within the noise floor of the best: tied with it
+  B.tied = B.model;
+  for t = 1:numel (types)
+    tie = repro_tie (M(t).flip, B.flip, floor(:)) & ! strcmp (B.model, types{t});
+    B.tied(tie) = strcat (B.tied(tie), {", "}, types(t));
   endfor
 endfunction

@@ -95,6 +95,8 @@ function s = material (c, mat, rec)
   endfor
   s.heldout_time_measured = J.time_measured;
   s.heldout_time_fits = J.time_fits;
+  ## the noise floor: two renders of the measured data under each light
+  [s.heldout_noise_flip_mean, s.heldout_noise_flip, s.heldout_time_noise] = noise_of (J, numel (c.judge));
   s.render_time_measured = M.info.time_total;
   s.render_time_pov = [R.inplane.pov_time];
   s.render_time_rt = [R.inplane.rt_time];
@@ -149,10 +151,12 @@ function s = material (c, mat, rec)
   endfor
 endfunction
 
-## per material and lobe count, the method with the lowest held-out FLIP,
-## and the models compared on the verdicts' FLIP (held out, or in-sample
-## without held-out lights): the best of each model over the methods
-## (repro_models) and the best model (REC: each material's records)
+## per material and lobe count, the method with the lowest held-out FLIP
+## and the methods tied with it (within the material's noise floor,
+## repro_tie), and the models compared on the verdicts' FLIP (held out, or
+## in-sample without held-out lights): the best of each model over the
+## methods (repro_models) and the best model, with the models tied with it
+## (REC: each material's records)
 function [H, S, MD] = verdicts (c, rec)
   mats = c.materials;
   nk = numel (c.lobes);
@@ -162,9 +166,11 @@ function [H, S, MD] = verdicts (c, rec)
   for m = c.methods
     F.(m{1}) = nan (numel (mats), nk);
   endfor
+  floor = nan (numel (mats), 1);
   for i = 1:numel (mats)
     J = rec{i}.judge;
     R = rec{i}.render_fits;
+    floor(i) = noise_of (J, numel (c.judge));
     best = repmat ({""}, 1, nk);
     bf = Inf (1, nk);
     for m = c.methods
@@ -181,13 +187,34 @@ function [H, S, MD] = verdicts (c, rec)
       endif
     endfor
     if (held)
-      H.best_method.(repro_field (mats{i})) = struct ("method", {best}, "flip", bf);
+      tied = best;
+      for m = c.methods
+        tie = repro_tie (F.(m{1})(i,:), bf, floor(i)) & ! strcmp (best, m{1});
+        tied(tie) = strcat (tied(tie), {", "}, m(1));
+      endfor
+      H.best_method.(repro_field (mats{i})) = struct ("method", {best}, "flip", bf, "tied", {tied},
+                                                      "noise_flip", floor(i));
     endif
   endfor
-  [M, B] = repro_models (c, F);
+  [M, B] = repro_models (c, F, floor);
   S = struct ();
   for i = 1:numel (mats)
-    S.(repro_field (mats{i})) = struct ("model", {B.model(i,:)}, "method", {B.method(i,:)}, "flip", B.flip(i,:));
+    S.(repro_field (mats{i})) = struct ("model", {B.model(i,:)}, "method", {B.method(i,:)}, "flip", B.flip(i,:),
+                                        "tied", {B.tied(i,:)});
   endfor
   MD = struct ("model", {M.model}, "flip", {M.flip}, "method", {M.method});
+endfunction
+
+## the noise floor of judge record J (repro_judge) under NL lights: its mean
+## F over the lights, per light FL (1 x NL) and its time T; NaN where the
+## record holds none (JUDGE empty: null; a record older than the floor)
+function [f, fl, t] = noise_of (J, nl)
+  f = NaN;
+  fl = nan (1, nl);
+  t = NaN;
+  if (isfield (J, "noise_flip") && isnumeric (J.noise_flip) && numel (J.noise_flip) == nl)
+    fl = J.noise_flip(:)';
+    f = mean (fl);
+    t = J.time_noise;
+  endif
 endfunction

@@ -78,13 +78,15 @@ function V = heldout_view (V, sm, c)
   if (V.has_judge)
     [V.material_names.first_light] = deal (c.judge(1).label);
   endif
-  V.best_method_rows = {};
+  V.best_method_rows = V.noise_rows = {};
   if (V.has_judge)
     for i = 1:numel (mats)
+      s = sm.materials.(repro_field (mats{i}));
       b = sm.heldout.best_method.(repro_field (mats{i}));
-      t = arrayfun (@(j) sprintf ("%d lobe%s: %s (%.4f)", c.lobes(j), merge (c.lobes(j) > 1, "s", ""),
-                                  b.method{j}, b.flip(j)), 1:numel (c.lobes), "uniformoutput", false);
+      t = arrayfun (@(j) best_text (c, s, b, j), 1:numel (c.lobes), "uniformoutput", false);
       V.best_method_rows{end+1} = struct ("material", mats{i}, "text", strjoin (t, "; "));
+      V.noise_rows{end+1} = struct ("material", mats{i}, "lights", {num2cell(s.heldout_noise_flip)},
+                                    "mean", s.heldout_noise_flip_mean);
     endfor
   endif
   V.models_list = strjoin ({sm.models.model}, ", ");
@@ -95,10 +97,29 @@ function V = heldout_view (V, sm, c)
     B = sm.best_model.(repro_field (mats{i}));
     for j = 1:numel (c.lobes)
       cells = arrayfun (@(M) struct ("flip", M.flip(i,j), "method", M.method{i,j}), sm.models);
+      best = B.model{j};
+      if (isfield (B, "tied") && ! strcmp (B.tied{j}, best))
+        best = ["tie: " B.tied{j}];      # within the noise floor (repro_tie)
+      endif
       V.model_rows{end+1} = struct ("material", mats{i}, "lobes", c.lobes(j), "cells", cells,
-                                    "best", B.model{j});
+                                    "best", best);
     endfor
   endfor
+endfunction
+
+## the best method of a material at lobe slot J in words (S: its numbers,
+## B: its best method and the methods tied with it), e.g. "2 lobes: general
+## (0.1993)", or with a tie "3 lobes: tie within the noise floor 0.1842:
+## general (0.1852), scene (0.2900)"
+function t = best_text (c, s, b, j)
+  k = sprintf ("%d lobe%s", c.lobes(j), merge (c.lobes(j) > 1, "s", ""));
+  tied = strsplit (b.tied{j}, ", ");
+  if (numel (tied) < 2)
+    t = sprintf ("%s: %s (%.4f)", k, b.method{j}, b.flip(j));
+  else
+    f = cellfun (@(m) sprintf ("%s (%.4f)", m, s.(["flip_" m "_heldout"])(j)), tied, "uniformoutput", false);
+    t = sprintf ("%s: tie within the noise floor %.4f: %s", k, b.noise_flip, strjoin (f, ", "));
+  endif
 endfunction
 
 ## the study, the fits' errors and the models' texts

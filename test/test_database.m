@@ -240,6 +240,28 @@
 %!   assert (size (S.heldout.flip.general), [3 2]);
 %!   assert (all (isfinite (S.heldout.flip.general(1:2,:)(:))));
 %!   assert (! isempty (regexp (rep, "Judged by held-out FLIP \\(the mean over courtyard, forest")), rep);
+%!   ## every verdict states its noise: the measured data rendered twice under
+%!   ## each light, their FLIP the floor, beside the verdicts
+%!   J = jsondecode (fileread (fullfile (db, "materials", "red-plastic", "judge", "red-plastic.json")));
+%!   assert (numel (J.noise_flip), 3);
+%!   assert (all (isfinite (J.noise_flip) & J.noise_flip >= 0 & J.noise_flip < 1), mat2str (J.noise_flip));
+%!   assert (J.noise_flip_mean, mean (J.noise_flip), 1e-12);
+%!   assert (J.time_noise > 0);
+%!   assert (size (S.heldout.noise_flip), [3 3]);
+%!   assert (S.heldout.noise_flip_mean(2), J.noise_flip_mean, 1e-12);   # red-plastic, the second material
+%!   assert (all (isfinite (S.heldout.noise_flip_mean(1:2))));
+%!   assert (! isempty (regexp (rep, "Every held-out verdict states its noise: .+ median 0\\.\\d{3} over the materials")), rep);
+%!   nc = find (strcmp (T(1,:), "flip_heldout_noise"));
+%!   assert (numel (nc), 1);
+%!   r = strcmp (T(:,1), "red-plastic");
+%!   assert (str2double (T(r,nc)), repmat (J.noise_flip_mean, nnz (r), 1), 1e-5);
+%!   ## the published baseline: a fit within the floor of the other ties
+%!   if (npub)
+%!     P = S.published;
+%!     tie = abs (P.recommended_flip - P.flip) <= P.noise_flip;
+%!     assert (P.recommended_better, nnz (! tie & P.recommended_flip < P.flip));
+%!     assert (numel (P.tied), nnz (tie));
+%!   endif
 %!   ## the summary: median PSNR, FLIP, Delta E, hue per method and lobe count
 %!   assert (! isempty (regexp (rep, ["\\| in-plane \\(the paper's method\\) \\| 2 \\| \\d+\\.\\d\\d \\| " ...
 %!                                    "\\d\\.\\d{3} \\| \\d+\\.\\d\\d \\| \\d+\\.\\d \\|"])), rep);
@@ -433,6 +455,8 @@
 %! assert (! exist (fullfile (db, "materials", "red-plastic", "sheet", "red-plastic-heldout.png"), "file"));
 %! J = jsondecode (fileread (fullfile (db, "materials", "red-plastic", "judge", "red-plastic.json")));
 %! assert (isempty (J.lights));
+%! assert (isempty (J.noise_flip) && (isempty (J.noise_flip_mean) || isnan (J.noise_flip_mean)));
+%! assert (isempty (strfind (rep, "states its noise")), rep);
 %! x = J.general_ggx(1).flip_mean;
 %! assert (isempty (x) || isnan (x));
 %! assert (! isempty (strfind (rep, "Metals (METALS in config.mk): red-plastic; the other 1 processed materials are the non-metals.")), rep);

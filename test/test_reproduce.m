@@ -120,7 +120,28 @@
 %!       assert (all (isfinite (s.fit_rmse_inplane_ggx)) && all (diff (s.fit_rmse_inplane_ggx) <= 1e-12));
 %!     endif
 %!     assert (b.flip(:)', min (f));
+%!     ## every verdict states its noise: the measured data rendered twice
+%!     ## under each light (seeds s and s + 1), their FLIP the floor; the
+%!     ## methods within it of the best tie (repro_tie), and the report says so
+%!     J = jsondecode (fileread (fullfile (out, "judge", [strrep(mat{1}, "_", "-") ".json"])));
+%!     assert (numel (J.noise_flip), 3);
+%!     assert (all (isfinite (J.noise_flip) & J.noise_flip >= 0 & J.noise_flip < 1), mat2str (J.noise_flip));
+%!     assert (J.noise_flip_mean, mean (J.noise_flip), 1e-12);
+%!     assert (J.time_noise > 0);
+%!     assert (s.heldout_noise_flip(:)', J.noise_flip(:)', 1e-12);
+%!     assert (s.heldout_noise_flip_mean, J.noise_flip_mean, 1e-12);
+%!     if (isempty (extra))
+%!       for j = 1:3
+%!         tie = mths(abs (f(:,j) - bm.flip(j)) <= J.noise_flip_mean & ! strcmp (mths(:), bm.method{j}));
+%!         assert (sort (strsplit (bm.tied{j}, ", ")), sort ([bm.method(j), tie(:)']), bm.tied{j});
+%!         if (! isempty (tie))
+%!           pat = [sprintf("%d lobes?: tie within the noise floor %.4f: ", j, J.noise_flip_mean) "general \\("];
+%!           assert (! isempty (regexp (rep, pat)), rep);
+%!         endif
+%!       endfor
+%!     endif
 %!   endfor
+%!   assert (! isempty (regexp (rep, "\\| red-plastic \\| 0\\.\\d{4} \\| 0\\.\\d{4} \\| 0\\.\\d{4} \\| \\*\\*0\\.\\d{4}\\*\\* \\|")), rep);
 %!   for f = {"figures/plane-red-plastic.png", "figures/renders-green-metallic-paint.png", ...
 %!            "figures/fit-trace.png", "figures/spp.png", "figures/env-samples.png", "fit/red-plastic-inplane-2.json", ...
 %!            "figures/heldout-red-plastic.png", "judge/red-plastic.json", "judge/red-plastic-measured.exr", ...
