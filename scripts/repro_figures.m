@@ -201,13 +201,19 @@ endfunction
 ## numbers: light samples per pixel
 function env_panel (c, ax, mat, first)
   P = jsondecode (fileread (repro_files ("spp", c.results, mat))).env;
-  loglog (ax, P.time, P.flip, "-o", "linewidth", 1.5);
-  for j = 1:numel (P.samples)
-    text (ax, P.time(j) * 1.06, P.flip(j) * 1.04, sprintf ("%d", P.samples(j)), "fontsize", 9);
+  hold (ax, "on");
+  col = [0.8 0.3 0.1; 0.2 0.6 0.2; 0.1 0.3 0.8];
+  for k = 1:rows (P.by_time)
+    loglog (ax, P.by_time(k,:), P.by_flip(k,:), "-o", "linewidth", 1.5, "color", col(k,:));
   endfor
+  set (ax, "xscale", "log", "yscale", "log");
+  for j = 1:numel (P.samples)
+    text (ax, P.by_time(3,j) * 1.06, P.by_flip(3,j) * 1.04, sprintf ("%d", P.samples(j)), "fontsize", 9);
+  endfor
+  legend (ax, P.sampling, "location", "southwest");
   xlabel (ax, "render time (s); numbers: light samples per pixel");
   if (first)
-    ylabel (ax, sprintf ("FLIP against %d light samples", P.reference));
+    ylabel (ax, sprintf ("FLIP against %d samples (mis)", P.reference));
   endif
   title (ax, sprintf ("%s: measured data under %s", mat, P.map), "interpreter", "none");
 endfunction

@@ -44,20 +44,34 @@ function E = env_study (c, b, material)
   s.light = e.light;
   s.spp = 1;
   s.jitter = false;
+  t0 = tic ();
+  [~, b.sampler] = brdf_density (b);   # the density of the BRDF samples, made once
+  t_density = toc (t0);
   [ref, info] = rt_render (s, b, "progress", false, "light_samples", c.env_reference);
   n = numel (c.env_samples);
+  smp = {"light", "brdf", "mis"};
   E = struct ("map", s.light.name, "reference", c.env_reference,
-              "reference_time", info.time_total, "samples", c.env_samples,
-              "time", zeros (1, n), "flip", zeros (1, n), "psnr", zeros (1, n));
-  for i = 1:n
-    s.seed = 1000 + i;
-    [img, info] = rt_render (s, b, "progress", false, "light_samples", c.env_samples(i));
-    q = img_compare (ref, img);
-    E.time(i) = info.time_total;
-    E.flip(i) = q.flip;
-    E.psnr(i) = q.psnr;
-    printf ("reproduce: [%s] %s, %4d light samples: %.2f s, FLIP %.3f, PSNR %.2f dB against %d\n",
-            material, E.map, c.env_samples(i), E.time(i), E.flip(i), E.psnr(i), E.reference);
-    fflush (stdout);
+              "reference_time", info.time_total, "density_time", t_density,
+              "samples", c.env_samples, "sampling", {smp}, "by_time", zeros (3, n),
+              "by_flip", zeros (3, n), "by_psnr", zeros (3, n), "by_relmse", zeros (3, n));
+  for k = 1:3
+    for i = 1:n
+      s.seed = 1000 + i;
+      [img, info] = rt_render (s, b, "progress", false, "light_samples", c.env_samples(i),
+                               "sampling", smp{k});
+      q = img_compare (ref, img);
+      E.by_time(k,i) = info.time_total;
+      E.by_flip(k,i) = q.flip;
+      E.by_psnr(k,i) = q.psnr;
+      E.by_relmse(k,i) = sum ((img(:) - ref(:)) .^ 2) / max (sum (ref(:) .^ 2), realmin);
+      printf ("reproduce: [%s] %s, %4d light samples (%s): %.2f s, FLIP %.3f, rel. MSE %.4f against %d (mis)\n",
+              material, E.map, c.env_samples(i), smp{k}, E.by_time(k,i), E.by_flip(k,i),
+              E.by_relmse(k,i), E.reference);
+      fflush (stdout);
+    endfor
   endfor
+  ## the default sampler's row, as the fields have always been
+  E.time = E.by_time(3,:);
+  E.flip = E.by_flip(3,:);
+  E.psnr = E.by_psnr(3,:);
 endfunction

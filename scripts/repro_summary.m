@@ -113,6 +113,13 @@ function s = material (c, mat, rec)
   s.env_map = P.env.map;
   s.env_reference = P.env.reference;
   s.env_reference_time = P.env.reference_time;
+  ## each sampling's row (light, brdf, mis), against the mis reference
+  s.env_sampling = cellstr (P.env.sampling)(:)';
+  s.env_by_time = P.env.by_time;
+  s.env_by_flip = P.env.by_flip;
+  s.env_by_psnr = P.env.by_psnr;
+  s.env_by_relmse = P.env.by_relmse;
+  s.env_density_time = P.env.density_time;
   s.material_bytes = M.info.material_bytes;
   ## every method's errors on every table (means over R, G, B) per lobe count
   tables = unique (cellfun (@(m) repro_method (m).base, c.methods, "uniformoutput", false), "stable");

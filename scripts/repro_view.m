@@ -189,12 +189,17 @@ function V = times_view (V, sm, c)
     endfor
     V.spp_rows{end+1} = struct ("material", mats{i}, "spp", s.spp_reference, "reference", true,
                                 "time", s.spp_reference_time, "psnr", NaN);
-    for j = 1:numel (s.env_samples)
-      V.env_rows{end+1} = struct ("material", mats{i}, "samples", s.env_samples(j), "reference", false,
-                                  "time", s.env_time(j), "flip", s.env_flip(j), "psnr", s.env_psnr(j));
+    for k = 1:numel (s.env_sampling)
+      for j = 1:numel (s.env_samples)
+        V.env_rows{end+1} = struct ("material", mats{i}, "sampling", s.env_sampling{k},
+                                    "samples", s.env_samples(j), "reference", false,
+                                    "time", s.env_by_time(k,j), "flip", s.env_by_flip(k,j),
+                                    "relmse", s.env_by_relmse(k,j), "psnr", s.env_by_psnr(k,j));
+      endfor
     endfor
-    V.env_rows{end+1} = struct ("material", mats{i}, "samples", s.env_reference, "reference", true,
-                                "time", s.env_reference_time, "flip", NaN, "psnr", NaN);
+    V.env_rows{end+1} = struct ("material", mats{i}, "sampling", "mis", "samples", s.env_reference,
+                                "reference", true, "time", s.env_reference_time, "flip", NaN,
+                                "relmse", NaN, "psnr", NaN);
     V.time_rows{end+1} = struct ("material", mats{i}, "render_time_measured", s.render_time_measured,
                                  "material_bytes", s.material_bytes, "render_time_pov", s.render_time_pov,
                                  "render_time_rt", s.render_time_rt);
