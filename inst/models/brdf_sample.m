@@ -3,6 +3,7 @@
 
 ## -*- texinfo -*-
 ## @deftypefn  {lafortune} {[@var{wi}, @var{p}] =} brdf_sample (@var{D}, @var{wo}, @var{u})
+## @deftypefnx {lafortune} {[@var{wi}, @var{p}] =} brdf_sample (@var{D}, @var{wo}, @var{u}, @var{own})
 ## Draw directions toward the light in proportion to a material's
 ## sampling density, with the density of each: importance sampling of the
 ## BRDF (a renderer's Sample_f; @code{brdf_pdf} is its PDF).
@@ -19,7 +20,9 @@
 ## sampling, as pbrt-v3's; for the other types with the roughness of the
 ## type's angular width), weight ks times its albedo at normal incidence.
 ## The first uniform chooses the component and is reused within it, so
-## stratified uniforms stay stratified.
+## stratified uniforms stay stratified.  With @var{own} (N x 1 indices into
+## the rows of @var{wo}) sample i is drawn for the view @var{wo}(@var{own}(i),:):
+## many samples of one view share its mixture, made once.
 ##
 ## @var{wi} (N x 3, unit; below the horizon where a lobe reaches there:
 ## the BRDF is 0 there and such a sample adds nothing) and @var{p} (N x 1,
@@ -41,31 +44,30 @@
 ## @seealso{brdf_pdf, brdf_density, rt_render}
 ## @end deftypefn
 
-function [wi, p] = brdf_sample (D, wo, u)
-  if (nargin != 3)
+function [wi, p] = brdf_sample (D, wo, u, own = [])
+  if (nargin < 3 || nargin > 4)
     print_usage ();
   endif
   D = brdf_density (D);
-  if (! (isnumeric (u) && isreal (u) && columns (u) == 2 && rows (u) == rows (wo)
-         && all (u(:) >= 0 & u(:) <= 1)))
-    error ("lafortune:badOption",
-           "brdf_sample: U must be N x 2 uniforms in [0, 1], N = rows (WO) = %d, got %s",
-           rows (wo), mat2str (size (u)));
+  if (! (isnumeric (u) && isreal (u) && columns (u) == 2 && all (u(:) >= 0 & u(:) <= 1)))
+    error ("lafortune:badOption", "brdf_sample: U must be N x 2 uniforms in [0, 1], got %s",
+           mat2str (size (u)));
   endif
+  own = __lafortune_check_views__ (wo, zeros (rows (u), 3), own, "brdf_sample");
   u = double (u);
-  M = density_mix (D, wo);
-  C = cumsum (M.W, 2);
+  M = density_mix (D, wo);             # once per view
+  W = M.W(own,:);
+  C = cumsum (W, 2);
   j = min (sum (C < u(:,1), 2) + 1, columns (C));
-  lo = C(sub2ind (size (C), (1:rows (C)).', j)) - M.W(sub2ind (size (C), (1:rows (C)).', j));
-  uu = min (max ((u(:,1) - lo) ./ max (M.W(sub2ind (size (C), (1:rows (C)).', j)), realmin), 0),
-            1 - eps);
-  wi = zeros (rows (wo), 3);
+  k = sub2ind (size (C), (1:rows (C)).', j);
+  uu = min (max ((u(:,1) - (C(k) - W(k))) ./ max (W(k), realmin), 0), 1 - eps);
+  wi = zeros (rows (u), 3);
   for c = unique (j).'
-    r = j == c;
-    wi(r,:) = density_draw (M, wo(r,:), c, uu(r), min (u(r,2), 1 - eps), r);
+    r = find (j == c);
+    wi(r,:) = density_draw (M, wo(own(r),:), c, uu(r), min (u(r,2), 1 - eps), own(r));
   endfor
   if (nargout > 1)
-    p = brdf_pdf (D, wo, wi);
+    p = brdf_pdf (D, wo, wi, own);
   endif
 endfunction
 
@@ -140,6 +142,17 @@ endfunction
 %! m = struct ("rho_d", [0 0 0], "Cxy", zeros (0, 3), "Cz", zeros (0, 3), "e", zeros (0, 3));
 %! [wi, p] = brdf_sample (m, repmat ([0 0 1], 50, 1), rand (50, 2));
 %! assert (p, wi(:,3) / pi, 1e-14);
+
+%!test
+%! ## many samples of one view: the same draws as the view repeated
+%! m = brdf_model ("ggx", "rho_d", [0.1 0.1 0.1], "ks", 1, "alpha", 0.2, "F0", 0.5);
+%! wo = [0 0 1; 0.6 0 0.8];
+%! own = [1 2 2 1 2].';
+%! u = rand (5, 2);
+%! [a, pa] = brdf_sample (m, wo, u, own);
+%! [b, pb] = brdf_sample (m, wo(own,:), u);
+%! assert (a, b, 1e-15);
+%! assert (pa, pb, 1e-12);
 
 %!error <Invalid call> brdf_sample (1, 2)
 %!error id=lafortune:badOption brdf_sample (struct ("rho_d", [1 1 1], "Cxy", [], "Cz", [], "e", []), [0 0 1], [0.5 2])

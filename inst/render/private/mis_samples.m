@@ -33,13 +33,13 @@ function [L, wt, own] = mis_samples (env, k, seed, Ns, Vw)
   if (env.nb > 0)
     [u, v] = r2_points (k, env.nb, seed, 2891336453);
     ob = repmat (1:m, env.nb, 1)(:);
-    wl = brdf_sample (env.S, wo(ob,:), [u v]);
+    wl = brdf_sample (env.S, wo, [u v], ob);
     L = [L; wl(:,1) .* X(ob,:) + wl(:,2) .* Y(ob,:) + wl(:,3) .* Ns(ob,:)];
     own = [own; ob];
   endif
   L ./= sqrt (sum (L .^ 2, 2));
   wl = [sum(L .* X(own,:), 2), sum(L .* Y(own,:), 2), sum(L .* Ns(own,:), 2)];
-  pb = brdf_pdf (env.S, wo(own,:), wl);
+  pb = brdf_pdf (env.S, wo, wl, own);
   [pl, rad] = env_pdf (env.D, L);
   den = env.nl * pl + env.nb * pb;
   wt = rad ./ den;
