@@ -18,15 +18,6 @@
 ## bench, or  octave-cli --path src scripts/bench_sampling.m [quick]
 
 1;
-## the median of the finite values of X, NaN when there are none
-function m = med (x)
-  x = x(isfinite (x));
-  m = NaN;
-  if (! isempty (x))
-    m = median (x);
-  endif
-endfunction
-
 here = fileparts (mfilename ("fullpath"));
 addpath (fullfile (here, "..", "inst"));
 addpath (here);
@@ -93,7 +84,7 @@ for i = 1:numel (mats)
     for k = 2:3
       r(k-1,:) = exp (interp1 (log (T(k,:)), log (E(k,:)), log (T(1,:)))) ./ E(1,:);
     endfor
-    summ(end+1,:) = {b.name, mp{1}, med(r(2,:)), med(r(1,:)), tden};
+    summ(end+1,:) = {b.name, mp{1}, repro_median(r(2,:)), repro_median(r(1,:)), tden};
   endfor
 endfor
 printf ("\nrelative MSE at equal time, against light sampling (median over light's sample counts\n");

@@ -65,7 +65,7 @@ function S = db_models (c, D, ok, mats, X)
   g = find (strcmp ({M.model}, "ggx"));
   if (! isempty (g))
     ## Lavoue et al.'s split: GGX ahead of Lafortune on metals, not on the rest
-    mm = @(F, w) arrayfun (@(j) nanmed (F(isok & w,j)), 1:nk);
+    mm = @(F, w) arrayfun (@(j) repro_median (F(isok & w,j)), 1:nk);
     gm = mm (M(g).flip, metal) < mm (A.flip, metal);
     gn = mm (M(g).flip, ! metal) < mm (A.flip, ! metal);
     S.split = struct ("ggx_better_metals", gm, "ggx_better_nonmetals", gn,
@@ -121,10 +121,10 @@ function s = per_model (c, D, ok, X, M, B, metal, isok)
     s.params(j) = median (np);
     s.bytes(j) = 8 * s.params(j);
     s.json_bytes(j) = median (jb);
-    s.median_flip(j) = nanmed (M.flip(isok,j));
-    s.median_flip_metals(j) = nanmed (M.flip(isok & metal,j));
-    s.median_flip_nonmetals(j) = nanmed (M.flip(isok & ! metal,j));
-    s.median_deltae(j) = nanmed (de(isok));
+    s.median_flip(j) = repro_median (M.flip(isok,j));
+    s.median_flip_metals(j) = repro_median (M.flip(isok & metal,j));
+    s.median_flip_nonmetals(j) = repro_median (M.flip(isok & ! metal,j));
+    s.median_deltae(j) = repro_median (de(isok));
     s.best_on(j) = nnz (strcmp (B.model(isok,j), M.model));
     s.albedo_fits(j) = nfit;
     if (nfit > 0)
@@ -138,14 +138,5 @@ function x = at (r, f, k)
   x = NaN;
   if (isfield (r, f) && numel (r.(f)) >= k)
     x = r.(f)(k);
-  endif
-endfunction
-
-## the median of the finite values of X (NaN: none)
-function m = nanmed (x)
-  x = x(isfinite (x));
-  m = NaN;
-  if (! isempty (x))
-    m = median (x);
   endif
 endfunction

@@ -2,14 +2,15 @@
 ## SPDX-License-Identifier: GPL-3.0-or-later
 
 ## -*- texinfo -*-
-## @deftypefn {} {[@var{wi}, @var{wo}] =} local_dirs (@var{N}, @var{L}, @var{V})
+## @deftypefn {} {[@var{wi}, @var{wo}, @var{X}, @var{Y}] =} local_dirs (@var{N}, @var{L}, @var{V})
 ## World directions toward the light @var{L} and the viewer @var{V} (m x 3,
 ## unit) at surfaces of unit normal @var{N}, in the local shading frame
 ## (z = N, x and y any orthonormal completion: isotropic materials do not
 ## depend on it), as unit @var{wi}, @var{wo} (private, for @code{rt_render}
-## and @code{merl_scene}).
+## and @code{merl_scene}); @var{X}, @var{Y} the frame's tangents (for
+## @code{mis_samples}, which turns local directions back to the world).
 ## @end deftypefn
-function [wi, wo] = local_dirs (N, L, V)
+function [wi, wo, X, Y] = local_dirs (N, L, V)
   a = repmat ([1 0 0], rows (N), 1);
   swap = abs (N(:,1)) > 0.9;
   a(swap,:) = repmat ([0 1 0], nnz (swap), 1);

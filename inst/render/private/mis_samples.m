@@ -20,9 +20,7 @@
 ## @end deftypefn
 function [L, wt, own] = mis_samples (env, k, seed, Ns, Vw)
   m = numel (k);
-  [X, Y] = tangents (Ns);
-  wo = [sum(Vw .* X, 2), sum(Vw .* Y, 2), sum(Vw .* Ns, 2)];
-  wo ./= sqrt (sum (wo .^ 2, 2));
+  [~, wo, X, Y] = local_dirs (Ns, Vw, Vw);
   L = zeros (0, 3);
   own = zeros (0, 1);
   if (env.nl > 0)
@@ -46,12 +44,3 @@ function [L, wt, own] = mis_samples (env, k, seed, Ns, Vw)
   wt(! (den > 0) | ! isfinite (den), :) = 0;
 endfunction
 
-## the tangents of the local frame at unit normals N, as local_dirs makes them
-function [X, Y] = tangents (N)
-  a = repmat ([1 0 0], rows (N), 1);
-  swap = abs (N(:,1)) > 0.9;
-  a(swap,:) = repmat ([0 1 0], nnz (swap), 1);
-  X = cross (a, N, 2);
-  X ./= sqrt (sum (X .^ 2, 2));
-  Y = cross (N, X, 2);
-endfunction
