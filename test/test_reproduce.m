@@ -51,13 +51,14 @@
 %!   assert (! isempty (strfind (rep, "in-sample")));
 %!   ## the best model of each material: Lafortune's, the one model of MODELS,
 %!   ## or, in the run with the extra method inplane_ggx, Lafortune's or GGX
+%!   ## or the two tied (within the material's noise floor)
 %!   assert (! isempty (strfind (rep, "## The best model")));
 %!   if (isempty (extra))
 %!     assert (! isempty (regexp (rep, ["\\| red-plastic \\| 3 \\| 0\\.\\d{4} \\((inplane|general|scene)\\) \\| " ...
 %!                                      "\\*\\*lafortune\\*\\* \\|"])), rep);
 %!   else
 %!     assert (! isempty (regexp (rep, ["\\| red-plastic \\| 3 \\| 0\\.\\d{4} \\((inplane|hemisphere|scene)\\) \\| " ...
-%!                                      "0\\.\\d{4} \\(inplane_ggx\\) \\| \\*\\*(lafortune|ggx)\\*\\* \\|"])), rep);
+%!                                      "0\\.\\d{4} \\(inplane_ggx\\) \\| \\*\\*(lafortune|ggx|tie: (lafortune|ggx), (lafortune|ggx))\\*\\* \\|"])), rep);
 %!   endif
 %!   if (! isempty (extra))
 %!     ## the study, reduced: in-plane and scene tables, plain weights
