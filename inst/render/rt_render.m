@@ -213,7 +213,7 @@ function [img, info, cache] = rt_render (scene, material, varargin)
   elseif (strcmp (scene.light.type, "lights"))
     ns = rows (scene.light.directions);
   endif
-  sampling = env_sampling (opt.sampling, scene, ns);
+  sampling = env_sampling (opt.sampling, scene);
   mode = opt.mode;
   if (many)
     if (strcmp (mode, "slice"))
@@ -462,7 +462,7 @@ endfunction
 ## the sampling of an environment light: OPT ("auto", "light", "brdf" or
 ## "mis"); "auto" is "mis" under an environment light, "light" under a list
 ## of lights or a single light (nothing to combine)
-function sampling = env_sampling (opt, scene, ns)
+function sampling = env_sampling (opt, scene)
   if (! ischar (opt) || ! any (strcmp (opt, {"auto", "light", "brdf", "mis"})))
     error ("lafortune:badOption",
            "rt_render: SAMPLING must be \"auto\", \"light\", \"brdf\" or \"mis\", got %s",

@@ -5,8 +5,7 @@
 ## @deftypefn {} {[@var{L}, @var{wt}, @var{own}] =} mis_samples (@var{env}, @var{k}, @var{seed}, @var{Ns}, @var{Vw})
 ## The light directions of the hits of pixel samples @var{k} under an
 ## environment light by multiple importance sampling (private, for
-## @code{scene_trace}): @code{env.nl} samples of the map (@code{env_sample},
-## stratified by @code{r2_points}) and @code{env.nb} of the BRDF density
+## @code{scene_trace}): @code{env.nl} samples of the map (@code{light_samples}) and @code{env.nb} of the BRDF density
 ## @code{env.S} (@code{brdf_sample} about the shading normal @var{Ns} and
 ## the view @var{Vw}, stratified by another salt of @code{r2_points}),
 ## combined by the balance heuristic (Veach 1997, ch. 9): every sample,
@@ -23,10 +22,8 @@ function [L, wt, own] = mis_samples (env, k, seed, Ns, Vw)
   [~, wo, X, Y] = local_dirs (Ns, Vw, Vw);
   L = zeros (0, 3);
   own = zeros (0, 1);
-  if (env.nl > 0)
-    [u, v] = r2_points (k, env.nl, seed);
-    own = repmat (1:m, env.nl, 1)(:);
-    L = env_sample (env.D, u, v);
+  if (env.nl > 0)                      # the map's samples, as light_samples draws them
+    [L, ~, own] = light_samples (struct ("type", "environment"), env.D, k, env.nl, seed);
   endif
   if (env.nb > 0)
     [u, v] = r2_points (k, env.nb, seed, 2891336453);
