@@ -210,7 +210,10 @@ DB ?= results/quick/database
 else
 DB ?= results/database
 endif
-DB_MATS := $(sort $(basename $(notdir $(wildcard $(MERL_DIR)/*.binary))))
+# (scripts/db_names: only the names that are safe in a rule, a command and
+# a scene file; `database` and `db-list` name the files left out)
+db_names = sh scripts/db_names '$(subst ','\'',$(MERL_DIR))'
+DB_MATS := $(shell $(db_names))
 DB_DATA := $(abspath $(MERL_DIR))
 HOSTS ?=
 PARALLEL ?= parallel
@@ -249,7 +252,8 @@ DB_OUT := $(foreach k,table report summary gallery fig_psnr_lobes fig_flip_lobes
 
 .PHONY: database db-list db-settings
 database: deps
-	@test -n "$(DB_MATS)" || { echo "database: no *.binary file in MERL_DIR=$(MERL_DIR)" >&2; exit 1; }
+	@$(db_names) --warn > /dev/null
+	@test -n "$(DB_MATS)" || { echo "database: no *.binary file with a material's name in MERL_DIR=$(MERL_DIR)" >&2; exit 1; }
 	@$(MAKE) --no-print-directory -C src
 ifneq ($(HOSTS),)
 	@$(MAKE) --no-print-directory -s $(DB)/$(FILE_settings)
@@ -263,6 +267,7 @@ endif
 
 # the materials, one per line (for job arrays)
 db-list:
+	@$(db_names) --warn > /dev/null
 	@printf '%s\n' $(DB_MATS)
 
 # the database's settings.json, made once before the per-material jobs of a

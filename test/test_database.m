@@ -82,12 +82,27 @@
 %!     merl_write (fullfile (merl, [m{1} ".binary"]), merl_standin (m{1}));
 %!   endif
 %! endfor
+%! ## names that no rule, command or scene file may see: left out with a warning
+%! for n = __bad_names ()
+%!   [err, msg] = symlink (fullfile (merl, "red-plastic.binary"), fullfile (merl, [n{1} ".binary"]));
+%!   assert (err == 0, "%s", msg);
+%! endfor
 %! fid = fopen (fullfile (merl, "truncated.binary"), "w");
 %! fwrite (fid, [90 180 360], "int32");
 %! fwrite (fid, ones (1000, 1), "double");
 %! fclose (fid);
 %!endfunction
 
+%!function n = __bad_names ()
+%! n = {"has space", "it's", "a$b", "back`tick", "semi;colon", "caf\303\251", "-dash"};
+%!endfunction
+%!function __check_bad_names (merl, txt)
+%! ## each file with a bad name named once, with the names allowed
+%! for n = __bad_names ()
+%!   w = sprintf ("database: warning: skipped the file '%s': a material's name may hold only", fullfile (merl, [n{1} ".binary"]));
+%!   assert (numel (strfind (txt, w)), 1, txt);
+%! endfor
+%!endfunction
 %!function [st, txt] = __cluster (top, what, dir)
 %! ## test/cluster.sh: start or stop the test's own daemons (exit 2: not installed)
 %! [st, txt] = system (sprintf ("bash '%s' %s '%s' 2>&1", fullfile (top, "test", "cluster.sh"), what, dir));
@@ -201,6 +216,7 @@
 %!   assert (! exist (fullfile (db, "table.csv"), "file"), "the killed runs should not have finished");
 %!   [st, txt] = __make (top, db, merl, "-j2 database");
 %!   assert (st == 0, "%s", txt);
+%!   __check_bad_names (merl, txt);
 %!   T = __table (fullfile (db, "table.csv"));
 %!   ## the published fits (PUBLISHED) of both materials, where ../shared has them
 %!   npub = 2 * (exist (fullfile (top, "..", "shared", "data", "ngan2005", "lafortune-1lobe.tsv"), "file") == 2);
@@ -577,6 +593,7 @@
 %!   assert (st == 0, "%s", txt);
 %!   id = regexp (txt, "job array (\\d+) \\(3 materials\\), merge job (\\d+)", "tokens", "once");
 %!   assert (numel (id) == 2, "%s", txt);
+%!   __check_bad_names (merl, txt);
 %!   __slurm_wait (id, 600);
 %!   merge = fileread (fullfile (logs, sprintf ("slurm-lafortune-db-merge-%s.out", id{2})));
 %!   assert (! isempty (strfind (merge, "database: done")), merge);
