@@ -26,8 +26,10 @@
 ## magnitude (fitting c*y gives c times the fit of y), lobes grown one at a
 ## time from the fit with one lobe fewer (so the fit's objective, on the
 ## samples or cells it runs on, never rises with more lobes), a guard (a result that is not finite or exceeds 10 times
-## the data's maximum on the data is rejected), and the trace of the error
-## against run time.
+## the data's maximum on the data is rejected; a Lafortune model is held
+## to that bound on the whole hemisphere, see lafortune_fit; the
+## physically based types are finite everywhere by their parameters'
+## bounds), and the trace of the error against run time.
 ##
 ## Options:
 ## @table @code

@@ -50,15 +50,22 @@
 ## above 200000: on the in-plane table from 2 lobes on), then a run on all
 ## groups.  Without a warm-up (on the in-plane table, the first lobe), the
 ## best candidate is first refined the same way on a finer grid of
-## directions and exponents around it.  A result
-## that exceeds 10 times the data's maximum anywhere in the data's angular
-## range (checked on a 0.5-degree in-plane grid, where every lobe's base
-## reaches its extremes; for a scene table on every pair a normal can make
-## at its angles between light and viewer, up to 89.5 degrees) is rejected: such a lobe fits a few samples and
-## explodes between them or toward grazing angles; the next start is tried
-## instead (@code{info.rejected} counts them).  As a start that adds a zero
-## lobe reproduces the k-lobe error, the error never increases with more
-## lobes.
+## directions and exponents around it.
+##
+## Every model returned is bounded: at most 10 times the data's largest
+## value for every pair of directions with theta_i and theta_o in [0, 90]
+## degrees, whatever angles the table covers.  A lobe that exceeds it (it
+## fits a few samples and explodes between them, past the table's angles
+## or toward grazing ones) is scaled down to the bound (Cxy and Cz by one
+## factor) and kept if it still lowers the error, and the next start is
+## tried as well; shared lobes are not scaled, and are rejected
+## (@code{info.rejected} counts them).  As a start that adds a zero lobe
+## reproduces the k-lobe error, the error never increases with more lobes.
+## The one fit from @code{"start"} or @code{"init", "plain"} is checked when
+## it ends: zero data give the zero model, a result above the bound is
+## scaled down, and one that cannot be (rho_d alone above it, or shared
+## lobes) is the error @code{lafortune:unboundedFit}, which says where it
+## explodes.
 ##
 ## Options:
 ## @table @code
@@ -732,6 +739,57 @@ endfunction
 
 %!shared S0
 %! S0 = struct ("wi", repmat ([0 0 1], 5, 1), "wo", repmat ([0 0 1], 5, 1), "rgb", ones (5, 3));
+%!function pk = __peak_ratio (m, S)
+%!  ## the model's bound on the whole hemisphere over the data's largest value
+%!  pk = __lafortune_check_bounded__ (m) ./ max (abs (S.rgb), [], 1);
+%!endfunction
+
+%!test
+%! ## a lobe that the table (to 40 degrees) supports and that explodes past
+%! ## it (1e5 at grazing angles): the fit is bounded on the whole hemisphere
+%! truth = struct ("rho_d", [0.1 0.1 0.1], "Cxy", -[1.3 1.3 1.3], "Cz", [1 1 1], "e", [50 50 50]);
+%! S = __plane (truth, 0:2:40, -40:2:40);
+%! ## (no bounded lobe follows a rise of 344 times within 40 degrees: the
+%! ## fit is poor, but not worse than rho_d alone)
+%! assert (max (__peak_ratio (truth, S)) > 1e3);
+%! warning ("off", "lafortune:notConverged", "local");
+%! [m, info] = lafortune_fit (S, 2, "channels", 2);
+%! assert (__peak_ratio (m, S)(2) <= 10 + 1e-9);
+%! assert (m.e(:,2) > 1);
+%! assert (info.history(2,2) <= info.history(1,2) + eps);
+
+%!test
+%! ## from a given start that explodes: the fit is repaired to the bound
+%! truth = struct ("rho_d", [0.1 0.1 0.1], "Cxy", -[1 1 1], "Cz", [1 1 1], "e", [20 20 20]);
+%! S = __plane (truth, 0:2:60, -60:2:60);
+%! boom = struct ("rho_d", [0.1 0.1 0.1], "Cxy", -[1.5 1.5 1.5], "Cz", [0.9 0.9 0.9], "e", [300 300 300]);
+%! m = lafortune_fit (S, 1, "start", boom, "max_iter", 1);
+%! assert (all (__peak_ratio (m, S) <= 10));
+%! assert (all (m.e == 300) && all (m.Cxy < 0));
+
+%!test
+%! ## a forward lobe the data support up to 80 degrees is still fitted
+%! truth = struct ("rho_d", [0.05 0.05 0.05], "Cxy", -[1.02 1.02 1.02], "Cz", [0.95 0.95 0.95],
+%!                 "e", [30 30 30]);
+%! [m, info] = lafortune_fit (__plane (truth), 1, "channels", 2);
+%! assert (info.rel_rmse(2) < 1e-3);
+%! assert ([m.Cxy(2) m.Cz(2) m.e(2)], [-1.02 0.95 30], [1e-3 1e-3 0.1]);
+
+%!test
+%! ## zero data from an exploding start: the zero model
+%! S = __plane (struct ("rho_d", [0 0 0], "Cxy", [0 0 0], "Cz", [0 0 0], "e", [1 1 1]), 0:10:60, -60:10:60);
+%! boom = struct ("rho_d", [0 0 0], "Cxy", -[1.5 1.5 1.5], "Cz", [0.9 0.9 0.9], "e", [300 300 300]);
+%! m = lafortune_fit (S, 1, "start", boom, "max_iter", 1, "channels", 1);
+%! assert (max (lafortune_eval (m, S.wi, S.wo)(:,1)), 0);
+
+%!error id=lafortune:unboundedFit
+%! ## shared lobes from an exploding start are not repaired: the error
+%! truth = struct ("rho_d", [0.1 0.1 0.1], "Cxy", -[1 1 1], "Cz", [1 1 1], "e", [20 20 20]);
+%! S = __plane (truth, 0:4:60, -60:4:60);
+%! boom = struct ("rho_d", [0.1 0.1 0.1], "Cxy", -[1.5 1.5 1.5], "Cz", [0.9 0.9 0.9], "e", [300 300 300]);
+%! warning ("off", "lafortune:notConverged", "local");
+%! lafortune_fit (S, 1, "start", boom, "max_iter", 1, "color", "shared");
+
 %!error <Invalid call> lafortune_fit (S0)
 %!error <NLOBES must be an integer from 1 to 8> lafortune_fit (S0, 0)
 %!error <NLOBES must be an integer from 1 to 8> lafortune_fit (S0, 9)

@@ -10,6 +10,13 @@
 ## lobes of a growing fit (data units; the one fit, from a given start,
 ## otherwise) and the front's @var{info}.
 ##
+## Every model returned is bounded on the whole hemisphere (the type's
+## guard on @code{coords ("region")}): a growing fit keeps only lobes the
+## guard accepts, or their repair; the one fit from a given start is
+## checked when it ends: data that are zero give the zero model, a result
+## the guard rejects is repaired, and one that cannot be repaired is the
+## error @code{lafortune:unboundedFit}, which says where it explodes.
+##
 ## What differs between the types is in their definitions: what the model
 ## sees of a pair of directions and how samples equal in it, or near, are
 ## grouped (@code{coords ("x")}, @code{coords ("groups")}, with a coarser
@@ -42,10 +49,7 @@ function [models, info] = fit_driver (S, wt, n0, def, nlobes, opt, fname)
   ## fit only (from a given start, one run)
   grow = strcmp (opt.init, "grow") && isempty (opt.start);
   [j, xc, how, xr, jg, jrep] = def.coords ("groups", [], x, wt(keep), opt, grow);
-  G = [];
-  if (grow)
-    G = def.coords ("region", [], S, Sf, x);
-  endif
+  G = def.coords ("region", [], S, Sf, x);
   nan3 = nan (1, 3);
   info = struct ("nlobes", nlobes, "weight", opt.weight, "color", opt.color, "n", rows (x),
                  "groups", rows (xc), "reduce", how,
@@ -95,6 +99,9 @@ function [models, info] = fit_driver (S, wt, n0, def, nlobes, opt, fname)
     D.sc = sc(B);
     p0 = def.coords ("start", D, opt, B, sc(B), nlobes);
     run = fit_grow (D, R, nlobes, opt, G, p0, t0);
+    if (! grow)
+      run.ps{nlobes} = bounded (D, run.ps{nlobes}, G, B, fname);
+    endif
     for k = 1:nlobes
       if (! isempty (run.ps{k}))
         Ps{k}(:,B) = def.coords ("params", D, run.ps{k}, sc(B));
@@ -144,4 +151,53 @@ function [models, info] = fit_driver (S, wt, n0, def, nlobes, opt, fname)
   if (! grow)
     models = {model};
   endif
+endfunction
+
+## The one fit P (from a given start) of the channels B, bounded (see
+## above): as it is, the zero model for zero data, its repair, or the error
+function p = bounded (D, p, G, B, fname)
+  coords = D.def.coords;
+  if (coords ("guard", D, p, G))
+    return;
+  endif
+  z = coords ("zero", D);
+  if (all (D.ymax == 0))
+    p = [zeros(D.nch, 1); repmat(z, (numel (p) - D.nch) / numel (z), 1)];
+    return;
+  endif
+  r = coords ("repair", D, p);
+  if (! isempty (r) && coords ("guard", D, r, G))
+    p = r;
+    return;
+  endif
+  [v, ti, to, c] = peak_at (D, p, G);
+  side = "on the side of the light";
+  if (to < 0)
+    side = "on the mirror side";
+  endif
+  error ("lafortune:unboundedFit",
+         "%s: the fit from the given start is unbounded on channel %d: %.3g times the data's largest value at theta_i = %g, theta_o = %g degrees (%s); expected at most 10 times it on the whole hemisphere: give another start, or let the fit grow (\"init\", \"grow\")",
+         fname, B(c), v, ti, abs (to), side);
+endfunction
+
+## where on the plane of incidence G (fit_guard) the Lafortune model P of
+## scaled data is largest against the data's maximum: the ratio V, the
+## angles (degrees, TO < 0 on the mirror side) and the channel's index C
+function [v, ti, to, c] = peak_at (D, p, G)
+  v = -Inf; ti = to = NaN; c = 1;
+  P = {p};
+  if (D.nch > 1)
+    P = shared_lobes ("split", p, D.ref, D.nch);
+  endif
+  t = 0:0.5:90;
+  tos = [-fliplr(t(2:end)), t];
+  for k = 1:numel (P)
+    g = __lafortune_lafortune_core__ (P{k}, G.x(:,1), G.x(:,2)) / max (D.ymax(k), realmin);
+    g(! isfinite (g)) = Inf;
+    [m, i] = max (g);
+    if (m > v)
+      [a, b] = ind2sub ([numel(t), numel(tos)], i);
+      v = m; ti = t(a); to = tos(b); c = k;
+    endif
+  endfor
 endfunction

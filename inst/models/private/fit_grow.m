@@ -12,7 +12,10 @@
 ## start @var{p0} (not empty), one Levenberg-Marquardt run from it; else
 ## lobes are added one at a time from the type's candidate starts
 ## (@code{coords ("starts")}), each run by fit_lm and kept if the type's
-## guard (@code{coords ("guard")}) accepts it and the objective is lower:
+## guard (@code{coords ("guard")}) accepts it, or its repair (@code{coords
+## ("repair")}: the lobes scaled down to the guard's bound, with the fit's
+## rho_d or the previous one; a repaired result does not end the search),
+## and the objective is lower:
 ## a zero lobe (@code{coords ("zero")}) keeps the previous error, so more
 ## lobes never fit worse.  The type's policy (@code{def.grow}) says how the
 ## starts are tried: @code{screen} (the first @code{opt.tries} get a few
@@ -110,16 +113,41 @@ function run = add_lobe (D, R, p, obj, opt, G, t0)
       [pj, enf] = fit_energy (D, pj);
       run.enforced = run.enforced || enf;
     endif
+    repaired = false;
     if (! coords ("guard", D, pj, G))
-      run.rejected += 1;
-      continue;
+      pj = repair (D, pj, p, G);
+      if (isempty (pj))
+        run.rejected += 1;
+        continue;
+      endif
+      repaired = true;
     endif
     oj = fit_objective (D, fit_eval (D, pj));
     if (oj < run.obj)
       run.p = pj; run.obj = oj; run.cvg = cv; run.trace = T;
     endif
-    if (pol.first)
+    if (pol.first && ! repaired)
       break;
+    endif
+  endfor
+endfunction
+
+## The repair of the result PJ that the guard rejects (coords ("repair"):
+## its lobes scaled down to the guard's bound), or of PJ with the previous
+## rho_d (of P), which the fit traded for the lobe it had: the one of lower
+## objective that the guard accepts; [] when there is none
+function best = repair (D, pj, p, G)
+  coords = D.def.coords;
+  best = [];
+  alt = pj;
+  alt(1:D.nch) = p(1:D.nch);
+  bo = Inf;
+  for q = {coords("repair", D, pj), coords("repair", D, alt)}
+    if (! isempty (q{1}) && coords ("guard", D, q{1}, G))
+      o = fit_objective (D, fit_eval (D, q{1}));
+      if (o < bo)
+        best = q{1}; bo = o;
+      endif
     endif
   endfor
 endfunction

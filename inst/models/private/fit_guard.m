@@ -2,55 +2,45 @@
 ## SPDX-License-Identifier: GPL-3.0-or-later
 
 ## -*- texinfo -*-
-## @deftypefn  {} {@var{G} =} fit_guard (@var{cosmin})
-## @deftypefnx {} {@var{G} =} fit_guard ("scene", @var{x}, @var{cg})
+## @deftypefn  {} {@var{G} =} fit_guard ()
 ## @deftypefnx {} {@var{ok} =} fit_guard (@var{p}, @var{G}, @var{ymax})
-## The acceptance test of a fitted channel (private).
+## @deftypefnx {} {@var{p} =} fit_guard ("repair", @var{p}, @var{ymax})
+## The acceptance test of a fitted Lafortune channel (private).
 ##
-## @code{G = fit_guard (cosmin)}: direction pairs that span the data's angular
-## range (theta up to acos (@var{cosmin})), the in-plane pairs on a
-## 0.5-degree grid, which reach the extremes of every lobe's base (ux vx + uy
-## vy is largest in size in the plane); @code{G.x} = [a, c].
-##
-## @code{G = fit_guard ("scene", x, cg)}: for a scene table (rows x = [a, c],
-## cos gamma = @var{cg} of each row, gamma the angle between light and
-## viewer): every pair a normal can make at those gammas, ti and to on a
-## grid up to 89.5 degrees with |ti - to| <= gamma <= ti + to (gamma
-## itself on a grid over the table's range widened by 5 degrees), and the
-## table's rows: what the scene's pixels can see, grazing angles and
-## silhouettes included, where a table sampled at the pixels has gaps.  The
-## margin in gamma rejects a lobe that is bounded only at the scene's exact
-## gamma: with Cxy = Cz the base is Cxy (wi . wo) = Cxy cos gamma, a constant
-## under an orthographic camera and a directional light, which a fit can
-## use with a huge exponent and which explodes in any other view.
+## @code{G = fit_guard ()}: the pairs of the plane of incidence, theta_i in
+## [0, 90] and theta_o in [-90, 90] degrees (negative on the mirror side)
+## on a 0.5-degree grid; @code{G.x} = [a, c].  A lobe's base Cxy a + Cz c is
+## linear in (a, c) = (ux vx + uy vy, uz vz), and every pair of directions
+## of the hemisphere has |a| + c <= 1, c >= 0, a triangle whose corners
+## (a, c) = (0, 1), (1, 0) and (-1, 0) are in the plane: so G reaches
+## each lobe's largest value anywhere on the hemisphere, whatever the
+## table covers.
 ##
 ## @code{ok = fit_guard (p, G, ymax)}: false when the model @var{p} is not
-## finite on G or exceeds 10 @var{ymax} there: a lobe that fits a few samples
-## and explodes between them (or toward grazing angles).  The sum of the
-## lobes' largest values on G (each base is linear in (a, c): two products
-## per point) bounds the model; only when that bound fails is the model
-## evaluated on all of G.
+## finite on G or exceeds 10 @var{ymax} there (a lobe that fits a few
+## samples and explodes between them, or past the table's angles).  The sum
+## of the lobes' peaks, max (Cz, |Cxy|, 0)^e each, bounds the model; only
+## when that bound fails is the model evaluated on all of G.
+##
+## @code{p = fit_guard ("repair", p, ymax)}: @var{p} with each lobe whose
+## peak exceeds its share of 10 @var{ymax} less rho_d / pi (the share: that
+## bound over the number of lobes) scaled down to it (Cxy and Cz times one
+## factor, made in log space); lobes within their share are kept as they
+## are.  The result passes the guard.
 ## @end deftypefn
 function out = fit_guard (p, G, ymax)
-  if (ischar (p))
-    out.x = scene_set (G, ymax);
-    return;
-  endif
-  if (nargin == 1)
-    amax = acosd (max (p, 0));
-    t = linspace (0, amax, max (2, ceil (amax / 0.5) + 1));
+  if (nargin == 0)
+    t = 0:0.5:90;
     to = [-fliplr(t(2:end)), t];
     out.x = [reshape(sind (t(:)) * sind (to), [], 1), reshape(cosd (t(:)) * cosd (to), [], 1)];
     return;
   endif
+  if (ischar (p))
+    out = repair (G, ymax);
+    return;
+  endif
   lim = 10 * max (ymax, realmin);
-  bound = p(1) / pi;
-  for k = 1:(numel (p) - 1) / 3
-    bmax = max (p(3*k-1) * G.x(:,1) + p(3*k) * G.x(:,2));
-    if (bmax > 0)
-      bound += exp (min (p(3*k+1) * log (bmax), 300));
-    endif
-  endfor
+  bound = p(1) / pi + sum (exp (min (log_peaks (p), 700)));
   if (isfinite (bound) && bound <= lim)
     out = true;
     return;
@@ -59,19 +49,34 @@ function out = fit_guard (p, G, ymax)
   out = all (isfinite (g)) && max (g) <= lim;
 endfunction
 
-function X = scene_set (x, cg)
-  ga = acos (min (max (cg, -1), 1));
-  lo = max (min (ga) - 5 * pi / 180, 0);
-  hi = min (max (ga) + 5 * pi / 180, pi);
-  ng = max (1, min (25, ceil ((hi - lo) / (pi / 180)) + 1));
-  gs = linspace (lo, hi, ng);
-  step = 0.5 * (1 + (ng > 5));               # degrees: 0.5, or 1 with many gammas
-  t = (0:step:89.5) * pi / 180;
-  [TI, TO] = ndgrid (t, t);
-  X = x;
-  for g = gs
-    ok = abs (TI(:) - TO(:)) <= g & g <= TI(:) + TO(:);
-    [wi, wo] = __lafortune_slice_dirs__ (TI(ok), TO(ok), cos (g));
-    X = [X; wi(:,1) .* wo(:,1) + wi(:,2) .* wo(:,2), wi(:,3) .* wo(:,3)];
+## the log of each lobe's largest value on the hemisphere, max (Cz, |Cxy|)^e
+## (-Inf for a lobe that is zero everywhere)
+function lp = log_peaks (p)
+  L = reshape (p(2:end), 3, []);
+  b = max (max (L(2,:), abs (L(1,:))), 0);
+  lp = L(3,:) .* log (b);
+  lp(b == 0 | (L(3,:) == 0 & b > 0)) = 0;
+  lp(b == 0) = -Inf;
+endfunction
+
+function p = repair (p, ymax)
+  nl = (numel (p) - 1) / 3;
+  if (nl < 1 || ! all (isfinite (p)))
+    return;
+  endif
+  cap = 10 * max (ymax, realmin) * (1 - 1e-9) - max (p(1), 0) / pi;
+  if (! (cap > 0))
+    p(2:end) = repmat ([0; 0; 1], nl, 1);
+    return;
+  endif
+  lc = log (cap / nl);
+  lp = log_peaks (p);
+  for k = find (lp > lc)
+    e = p(3*k+1);
+    if (e > 0)
+      p(3*k-1:3*k) *= exp ((lc - lp(k)) / e);
+    else                                 # a step: its height is 1
+      p(3*k-1:3*k) = 0;
+    endif
   endfor
 endfunction

@@ -7,6 +7,7 @@
 ## @deftypefnx {} {[@var{j}, @var{xc}, @var{how}, @var{xr}, @var{jg}, @var{rep}] =} fit_lafortune ("groups", [], @var{x}, @var{wt}, @var{opt}, @var{coarse})
 ## @deftypefnx {} {@var{G} =} fit_lafortune ("region", [], @var{S}, @var{Sf}, @var{x})
 ## @deftypefnx {} {@var{ok} =} fit_lafortune ("guard", @var{D}, @var{p}, @var{G})
+## @deftypefnx {} {@var{p} =} fit_lafortune ("repair", @var{D}, @var{p})
 ## @deftypefnx {} {@var{p0} =} fit_lafortune ("start", @var{D}, @var{opt}, @var{B}, @var{s}, @var{nlobes})
 ## @deftypefnx {} {[@var{P}, @var{warmup}] =} fit_lafortune ("starts", @var{D}, @var{p}, @var{opt}, @var{R})
 ## @deftypefnx {} {@var{z} =} fit_lafortune ("zero", @var{D})
@@ -24,10 +25,12 @@
 ## samples equal in (a, c) merged (fit_reduce), or on the cells of a 512 x
 ## 512 grid when there are many, and for a growing fit (@var{coarse}) a
 ## coarser grid that screens starts (see groups below).  "region": the
-## acceptance set of a growing fit (fit_guard): every pair a normal can make
-## at a scene table's angles between light and viewer, or the plane above
-## the table's lowest elevation.  "guard": the parameters accepted on every
-## channel.  "start": the given start @code{opt.start} (a model, data
+## acceptance set (fit_guard): the plane of incidence to 90 degrees, which
+## reaches every lobe's largest value on the hemisphere, whatever the table
+## covers.  "guard": the parameters accepted on every channel.  "repair":
+## one channel's parameters with the lobes that exceed the guard's bound
+## scaled down to it (fit_guard); [] for shared lobes, which are not
+## repaired.  "start": the given start @code{opt.start} (a model, data
 ## units), or the paper's plain start with @code{opt.init} "plain", in fit
 ## coordinates for data divided by @var{s}; [] for a growing fit.
 ## "starts": the candidate lobes on top of @var{p} (fit_starts), and
@@ -61,14 +64,14 @@ function varargout = fit_lafortune (what, D, varargin)
     case "groups"
       [varargout{1:6}] = groups (varargin{:});
     case "region"
-      [S, Sf, x] = varargin{:};
-      if (isfield (S, "kind") && strcmp (S.kind, "scene"))
-        varargout = {fit_guard("scene", x, sum (Sf.wi .* Sf.wo, 2))};
-      else
-        varargout = {fit_guard(min ([Sf.wi(:,3); Sf.wo(:,3)]))};
-      endif
+      varargout = {fit_guard()};
     case "guard"
       varargout = {accepted(D, varargin{:})};
+    case "repair"
+      varargout = {[]};
+      if (D.nch == 1)
+        varargout = {fit_guard("repair", varargin{1}, D.ymax)};
+      endif
     case "start"
       varargout = {start(D, varargin{:})};
     case "starts"

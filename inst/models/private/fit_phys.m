@@ -27,8 +27,8 @@
 ## in the data's units (rho_d and ks times the data's scale @var{s} of each
 ## channel: the shape does not scale), "zero" a lobe of amplitude 0 at the
 ## first start shape, "starts" the candidate starts of one more lobe (no
-## warm-up), "guard" whether a result is accepted; "region" and "start"
-## are empty (no acceptance set, no given start).
+## warm-up), "guard" whether a result is accepted; "region", "start" and
+## "repair" are empty (no acceptance set, no given start, no repair).
 ## @end deftypefn
 
 function varargout = fit_phys (what, D, arg, varargin)
@@ -40,7 +40,7 @@ function varargout = fit_phys (what, D, arg, varargin)
     case "groups"
       [varargout{1:6}] = groups (arg, varargin{:});
       return;
-    case {"region", "start"}             # no acceptance set; no given start
+    case {"region", "start", "repair"}   # no acceptance set, given start or repair
       varargout = {[]};
       return;
   endswitch
