@@ -74,6 +74,7 @@ function brdf_export (model, file, format)
     print_usage ();
   endif
   [model, def] = __lafortune_check_model__ (model, "brdf_export");
+  __lafortune_check_bounded__ (model, "brdf_export");
   name = [def.type "-model"];
   if (isfield (model, "name") && ischar (model.name) && ! isempty (model.name))
     ## one line of printable text: a control character (a newline) would end
@@ -325,6 +326,7 @@ endfunction
 %!error <Invalid call> brdf_export (m)
 %!error <Invalid call> brdf_export ()
 %!error <unknown FORMAT 'yaml'> brdf_export (m, "x.yaml", "yaml")
+%!error id=lafortune:unboundedModel brdf_export (struct ("rho_d", [0 0 0], "Cxy", [-1.5 0 0], "Cz", [0.9 0 0], "e", [738 1 1]), "x.json")
 %!error id=lafortune:badFormat brdf_export (m, "x.json", 3)
 %!error id=lafortune:unwritable brdf_export (m, "/nonexistent-dir/x.json", "json")
 %!error id=lafortune:badModel brdf_export (struct ("rho_d", 1), "x.json", "json")

@@ -116,6 +116,7 @@ function model = brdf_import (file)
   endif
   nm = model.name;
   model = __lafortune_check_model__ (model, "brdf_import");
+  __lafortune_check_bounded__ (model, sprintf ("brdf_import: '%s'", file));
   model.name = nm;
 endfunction
 
@@ -161,6 +162,26 @@ endfunction
 %! fid = fopen (f, "w"); fputs (fid, jsonencode (s)); fclose (fid);
 %! r = brdf_import (f);
 %! assert (r.e, m.e, 1e-12);
+
+%!test
+%! ## a file whose model is infinite somewhere on the hemisphere is refused
+%! ## (written by another tool: here by hand)
+%! m = struct ("name", "boom", "rho_d", [0.1 0.2 0.3], "Cxy", [-1.5 -1 -1], "Cz", [0.9 1 1],
+%!             "e", [738 20 30]);
+%! f = fullfile (d, "boom.json");
+%! brdf_export (setfield (m, "e", [1 20 30]), f, "json");
+%! s = jsondecode (fileread (f));
+%! s = rmfield (s, "exact");
+%! s.e = m.e;
+%! fid = fopen (f, "w"); fputs (fid, jsonencode (s)); fclose (fid);
+%! try
+%!   brdf_import (f);
+%!   error ("test:none", "no error");
+%! catch err
+%!   assert (err.identifier, "lafortune:unboundedModel");
+%!   assert (! isempty (strfind (err.message, "boom.json': the model is unbounded: channel 1, lobe 1,")));
+%!   assert (! isempty (strfind (err.message, "grazing light and view on the mirror side")));
+%! end_try_catch
 
 %!test
 %! ## every type back bit for bit, with its type; a readable value alone

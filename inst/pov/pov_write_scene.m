@@ -196,6 +196,9 @@ function info = pov_write_scene (scene, material, file, varargin)
            "%s: MATERIAL must be an analytic model (brdf_model) or a MERL material, got %s",
            fname, class (material));
   endif
+  if (! strcmp (kind, "merl"))
+    __lafortune_check_bounded__ (__lafortune_check_model__ (material, fname), fname);
+  endif
   light = scene.light;
   if (! ischar (file) || isempty (file))
     error ("lafortune:badFile", "%s: FILE must be a non-empty string", fname);
@@ -626,6 +629,17 @@ endfunction
 %!error <Invalid call> pov_write_scene (1, 2)
 %!error id=lafortune:badScene pov_write_scene (1, struct ("rho_d", [1 1 1]), "x.pov")
 %!error id=lafortune:badMaterial pov_write_scene (sc, 3, "x.pov")
+%!test
+%! ## a model infinite at grazing angles: refused, and no file written
+%! f = [tempname() ".pov"];
+%! boom = struct ("rho_d", [0 0 0], "Cxy", [-1.5 0 0], "Cz", [0.9 0 0], "e", [738 1 1]);
+%! try
+%!   pov_write_scene (sc, boom, f);
+%!   error ("test:none", "no error");
+%! catch err
+%!   assert (err.identifier, "lafortune:unboundedModel");
+%! end_try_catch
+%! assert (! exist (f, "file"));
 %!error id=lafortune:badOption pov_write_scene (sc, m, "x.pov", "entries", 300)
 %!error id=lafortune:badOption pov_write_scene (sc, m, "x.pov", "knots", "cubic")
 %!error id=lafortune:badOption pov_write_scene (sc, m, "x.pov", "bogus", 1)

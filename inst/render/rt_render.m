@@ -178,6 +178,9 @@ function [img, info, cache] = rt_render (scene, material, varargin)
            "rt_render: MATERIAL must be a MERL material (fields data, valid) or an analytic model (a Lafortune model, fields rho_d, Cxy, Cz, e, or see brdf_model), got %s",
            class (material));
   endif
+  if (! strcmp (kind, "merl"))
+    __lafortune_check_bounded__ (__lafortune_check_model__ (material, "rt_render"), "rt_render");
+  endif
   opt = __lafortune_parse_opts__ (varargin, "rt_render",
                     struct ("mode", "auto", "progress", true, "jitter", scene_jitter (scene),
                             "chunk", 65536, "slice_size", [128 64], "cache", [],
@@ -695,6 +698,14 @@ endfunction
 %! [~, ~, C] = rt_render (sc, lam, "progress", false);
 %! rt_render (sc, lam, "cache", C, "chunk", 7, "progress", false);
 %!error id=lafortune:badOption rt_render (scene_make ("sphere", "size", 4), struct ("rho_d", [1 1 1], "Cxy", [], "Cz", [], "e", []), "cache", struct ("x", 1))
+%!error <rt_render: the model is unbounded: channel 1, lobe 1, reaches about 1e130> rt_render (scene_make ("sphere", "size", 4), struct ("rho_d", [0 0 0], "Cxy", [-1.5 0 0], "Cz", [0.9 0 0], "e", [738 1 1]))
+%!test
+%! ## the largest model that passes renders finite pixels from every side
+%! m = struct ("rho_d", [0 0 0], "Cxy", [-1.5 0 0], "Cz", [0.9 0 0], "e", [170 1 1]);
+%! for L = {[0 1 1], [0 1 -1], [1 0 -0.05], [0 -0.2 -1]}
+%!   img = rt_render (scene_make ("sphere", "size", 24, "light_direction", L{1}), m, "progress", false);
+%!   assert (all (isfinite (img(:))));
+%! endfor
 %!error <CACHE serves slice mode .* and lights mode> rt_render (scene_make ("sphere", "size", 4, "camera", "perspective"), struct ("rho_d", [1 1 1], "Cxy", [], "Cz", [], "e", []), "cache", struct ("key", 1, "chunks", {{}}))
 %!error <Invalid call> rt_render (1)
 %!error id=lafortune:badMaterial rt_render (scene_make ("sphere", "size", 4), struct ("foo", 1))
