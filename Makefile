@@ -39,7 +39,7 @@ DEB_PACKAGES := octave octave-optim liboctave-dev libopenexr-dev pkg-config povr
 # test dependencies (make deps CLUSTER=1): the real ssh server and Slurm cluster of make check
 CLUSTER_PACKAGES := slurm-wlm munge openssh-server openssh-client
 
-.PHONY: all deps check bench dist install reproduce database clean distclean
+.PHONY: all deps check stability bench dist install reproduce database clean distclean
 
 all: dist
 
@@ -86,6 +86,13 @@ install: deps dist
 check: deps dist
 	@$(MAKE) --no-print-directory -C src
 	LAFORTUNE_TOP=$(CURDIR) $(OCT) scripts/run_tests.m $(abspath $(TARBALL))
+
+# the stiff and extreme cases as a table (study_stability; issue 49): fails
+# on any defect.  LAFORTUNE_STABILITY_MERL: a folder of MERL files whose
+# darkest and sharpest materials join the table
+stability: deps
+	@$(MAKE) --no-print-directory -C src
+	$(OCT) --path src --eval 'addpath (genpath ("inst")); addpath ("scripts"); exit (study_stability () > 0)'
 
 bench: deps
 	$(MAKE) -C src
