@@ -52,13 +52,8 @@ function [lp, kbig, where] = lafortune_peaks (M)
   kbig = zeros (1, nc);
   where = cell (1, nc);
   for c = 1:nc
-    cxy = M.Cxy(:,c); cz = M.Cz(:,c); e = M.e(:,c);
-    b = max (max (cz, abs (cxy)), 0);
-    ll = e .* log (b);
-    ll(e == 0 & b > 0) = 0;
-    ll(b == 0) = -Inf;
-    ll(! isfinite (cxy) | ! isfinite (cz) | ! isfinite (e) | e < 0) = Inf;
-    terms = [log(max (M.rho_d(c), 0) / pi); ll];
+    cxy = M.Cxy(:,c); cz = M.Cz(:,c);
+    terms = [log(max (M.rho_d(c), 0) / pi); __lafortune_log_peaks__(cxy, cz, M.e(:,c))];
     if (! isfinite (M.rho_d(c)))
       terms(1) = Inf;
     endif

@@ -49,7 +49,7 @@ function [models, info] = fit_driver (S, wt, n0, def, nlobes, opt, fname)
   ## fit only (from a given start, one run)
   grow = strcmp (opt.init, "grow") && isempty (opt.start);
   [j, xc, how, xr, jg, jrep] = def.coords ("groups", [], x, wt(keep), opt, grow);
-  G = def.coords ("region", [], S, Sf, x);
+  G = def.coords ("region", []);
   nan3 = nan (1, 3);
   info = struct ("nlobes", nlobes, "weight", opt.weight, "color", opt.color, "n", rows (x),
                  "groups", rows (xc), "reduce", how,
@@ -189,15 +189,12 @@ function [v, ti, to, c] = peak_at (D, p, G)
   if (D.nch > 1)
     P = shared_lobes ("split", p, D.ref, D.nch);
   endif
-  t = 0:0.5:90;
-  tos = [-fliplr(t(2:end)), t];
   for k = 1:numel (P)
     g = __lafortune_lafortune_core__ (P{k}, G.x(:,1), G.x(:,2)) / max (D.ymax(k), realmin);
     g(! isfinite (g)) = Inf;
     [m, i] = max (g);
     if (m > v)
-      [a, b] = ind2sub ([numel(t), numel(tos)], i);
-      v = m; ti = t(a); to = tos(b); c = k;
+      v = m; ti = G.ti(i); to = G.to(i); c = k;
     endif
   endfor
 endfunction

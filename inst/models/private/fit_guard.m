@@ -9,7 +9,8 @@
 ##
 ## @code{G = fit_guard ()}: the pairs of the plane of incidence, theta_i in
 ## [0, 90] and theta_o in [-90, 90] degrees (negative on the mirror side)
-## on a 0.5-degree grid; @code{G.x} = [a, c].  A lobe's base Cxy a + Cz c is
+## on a 0.5-degree grid; @code{G.x} = [a, c], @code{G.ti} and @code{G.to}
+## the angles of each row (degrees).  A lobe's base Cxy a + Cz c is
 ## linear in (a, c) = (ux vx + uy vy, uz vz), and every pair of directions
 ## of the hemisphere has |a| + c <= 1, c >= 0, a triangle whose corners
 ## (a, c) = (0, 1), (1, 0) and (-1, 0) are in the plane: so G reaches
@@ -31,8 +32,9 @@
 function out = fit_guard (p, G, ymax)
   if (nargin == 0)
     t = 0:0.5:90;
-    to = [-fliplr(t(2:end)), t];
-    out.x = [reshape(sind (t(:)) * sind (to), [], 1), reshape(cosd (t(:)) * cosd (to), [], 1)];
+    [TI, TO] = ndgrid (t, [-fliplr(t(2:end)), t]);
+    out = struct ("x", [sind(TI(:)) .* sind(TO(:)), cosd(TI(:)) .* cosd(TO(:))], "ti", TI(:),
+                  "to", TO(:));
     return;
   endif
   if (ischar (p))
@@ -49,14 +51,10 @@ function out = fit_guard (p, G, ymax)
   out = all (isfinite (g)) && max (g) <= lim;
 endfunction
 
-## the log of each lobe's largest value on the hemisphere, max (Cz, |Cxy|)^e
-## (-Inf for a lobe that is zero everywhere)
+## the log of each lobe's largest value on the hemisphere
 function lp = log_peaks (p)
   L = reshape (p(2:end), 3, []);
-  b = max (max (L(2,:), abs (L(1,:))), 0);
-  lp = L(3,:) .* log (b);
-  lp(b == 0 | (L(3,:) == 0 & b > 0)) = 0;
-  lp(b == 0) = -Inf;
+  lp = __lafortune_log_peaks__ (L(1,:), L(2,:), L(3,:));
 endfunction
 
 function p = repair (p, ymax)

@@ -5,7 +5,7 @@
 ## @deftypefnx {} {[@var{lb}, @var{ub}] =} fit_lafortune ("bounds", @var{D}, @var{np})
 ## @deftypefnx {} {@var{x} =} fit_lafortune ("x", [], @var{S})
 ## @deftypefnx {} {[@var{j}, @var{xc}, @var{how}, @var{xr}, @var{jg}, @var{rep}] =} fit_lafortune ("groups", [], @var{x}, @var{wt}, @var{opt}, @var{coarse})
-## @deftypefnx {} {@var{G} =} fit_lafortune ("region", [], @var{S}, @var{Sf}, @var{x})
+## @deftypefnx {} {@var{G} =} fit_lafortune ("region", [])
 ## @deftypefnx {} {@var{ok} =} fit_lafortune ("guard", @var{D}, @var{p}, @var{G})
 ## @deftypefnx {} {@var{p} =} fit_lafortune ("repair", @var{D}, @var{p})
 ## @deftypefnx {} {@var{p0} =} fit_lafortune ("start", @var{D}, @var{opt}, @var{B}, @var{s}, @var{nlobes})
