@@ -62,7 +62,7 @@ function R = repro_judge (material)
     return;
   endif
   b = repro_merl (c, material);
-  b.sampler = judge_density (models);
+  [~, b.sampler] = brdf_density (b);   # the data's own table: the same for every fit
   d = fileparts (repro_files ("judge_measured", c.results, material));
   repro_mkdir (d);
   for l = 1:nl
@@ -115,23 +115,6 @@ function R = repro_judge (material)
     endfor
     printf ("reproduce: [%s] %s: held-out FLIP (mean over %d lights) for %s lobe(s): %s\n", material,
             mth, nl, mat2str ([R.(mth).lobes]), mat2str ([R.(mth).flip_mean], 4));
-  endfor
-endfunction
-
-## the density the measured data's BRDF samples are drawn from under an
-## environment light (rt_render's multiple importance sampling): the
-## general fit of the most lobes, else the last fit of any method, else
-## none (brdf_density then makes a fit for sampling)
-function m = judge_density (models)
-  m = [];
-  f = fieldnames (models);
-  f = [f(strcmp (f, "general")); f(! strcmp (f, "general") & ! strcmp (f, "ngan2005"))];
-  for i = 1:numel (f)
-    k = find (! cellfun (@isempty, models.(f{i})), 1, "last");
-    if (! isempty (k))
-      m = models.(f{i}){k};
-      return;
-    endif
   endfor
 endfunction
 

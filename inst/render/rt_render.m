@@ -85,7 +85,7 @@
 ## the map (0.10.3's sampler, bit for bit).  The density is option
 ## @code{"density"} (a model or a @code{brdf_density}), by default
 ## @code{brdf_density (material)}: an analytic model's own lobes; for a
-## MERL material its field @code{sampler}, else a fit made for sampling.
+## MERL material its field @code{sampler}, else a table of its data.
 ## The weights depend on the density only, so every material shaded from
 ## the cache uses the measured data's density and stays unbiased.
 ## @end table

@@ -9,7 +9,10 @@
 ## cosine-weighted hemisphere; a cosine power about the lobe's axis,
 ## cos alpha = (1 - u)^(1/(e+1)) (log space, so that exponents of 1e7
 ## keep their angle); or a GGX half vector, tan^2 theta_h = alpha^2 u /
-## (1 - u), reflected: wi = 2 (wo . h) h - wo.
+## (1 - u), reflected: wi = 2 (wo . h) h - wo; or a tabulated density's
+## half vector: a cell of the view's table by @var{u} (its u marginal) and
+## @var{v} (phi within the row, the first half of [0, 1) for phi >= 0, the
+## second for phi < 0), then uniform within the cell, reflected.
 ## @end deftypefn
 function wi = density_draw (M, wo, j, u, v, r)
   ph = 2 * pi * v;
@@ -31,6 +34,8 @@ function wi = density_draw (M, wo, j, u, v, r)
       sh = sqrt (t2 ./ (1 + t2));
       h = [sh .* cos(ph), sh .* sin(ph), ch];
       wi = 2 * sum (wo .* h, 2) .* h - wo;
+    case 3
+      wi = table_draw (M, wo, u, v, r);
   endswitch
   wi ./= sqrt (sum (wi .^ 2, 2));
 endfunction
@@ -42,4 +47,42 @@ function [T, B] = frame_of (N)
   b = N(:,1) .* N(:,2) .* a;
   T = [1 + s .* N(:,1) .^ 2 .* a, s .* b, -s .* N(:,1)];
   B = [b, s + N(:,2) .^ 2 .* a, -N(:,2)];
+endfunction
+
+## a tabulated density's draws (density_table): cell, place in the cell, h, wi
+function wi = table_draw (M, wo, u, v, r)
+  T = M.T;
+  b = M.bin(r);
+  [iu, fu] = cdf_find (T.cu, b, u);
+  neg = v >= 0.5;
+  v = 2 * v - neg;
+  [ip, fp] = cdf_find (T.cp, (b - 1) * T.nu + iu, v);
+  th = pi / 2 * ((iu - 1 + fu) / T.nu) .^ 2;
+  ph = (ip - 1 + fp) / T.np * pi .* (1 - 2 * neg);
+  hx = sin (th) .* cos (ph);
+  hy = sin (th) .* sin (ph);
+  az = M.az(r,:);
+  h = [hx .* az(:,1) - hy .* az(:,2), hx .* az(:,2) + hy .* az(:,1), cos(th)];
+  wi = 2 * sum (wo .* h, 2) .* h - wo;
+endfunction
+
+## per row k of the cumulative rows C(R,:) (each ending at its total), the
+## cell of x C(R,end) (bisection) and x's place within it, in [0, 1)
+function [k, f] = cdf_find (C, R, x)
+  n = columns (C);
+  tot = C(sub2ind (size (C), R, repmat (n, size (R))));
+  x = x .* tot;
+  lo = zeros (size (R));
+  hi = repmat (n, size (R));
+  while (any (hi - lo > 1))
+    mid = floor ((lo + hi) / 2);
+    go = C(sub2ind (size (C), R, max (mid, 1))) < x;
+    lo(go) = mid(go);
+    hi(! go) = mid(! go);
+  endwhile
+  k = hi;
+  a = zeros (size (R));
+  a(k > 1) = C(sub2ind (size (C), R(k > 1), k(k > 1) - 1));
+  c = C(sub2ind (size (C), R, k));
+  f = min (max ((x - a) ./ max (c - a, realmin), 0), 1 - eps);
 endfunction

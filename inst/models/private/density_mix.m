@@ -13,10 +13,19 @@
 ## distribution.  Fields: @code{W} (N x nc, rows summing to 1),
 ## @code{kind} (1 x nc: 0 cosine, 1 cosine power, 2 GGX), @code{e},
 ## @code{alpha} (1 x nc), @code{A} (1 x nc cell: the power lobes' axes, N x 3).
-## A row with no weight (a black model) samples the cosine alone.
+## A row with no weight (a black model) samples the cosine alone.  A
+## tabulated density (@code{density_table}) is the cosine (weight
+## @code{P.wd}) and the table of the view's theta_o bin (kind 3; fields
+## @code{T}, the table, @code{bin}, each view's bin, and @code{az}, the
+## cosine and sine of each view's azimuth); a view whose bin is empty
+## samples the cosine alone.
 ## @end deftypefn
 function M = density_mix (P, wo)
   n = rows (wo);
+  if (P.table)
+    M = table_mix (P, wo);
+    return;
+  endif
   if (P.lafortune)
     nc = numel (P.e);
     A = cell (1, nc);
@@ -49,4 +58,18 @@ function M = density_mix (P, wo)
   W = exp (lw - mx);
   W ./= sum (W, 2);
   M = struct ("W", W, "kind", kind, "e", e, "alpha", alpha, "A", {[{[]}, A]});
+endfunction
+
+function M = table_mix (P, wo)
+  T = P.model;
+  to = acos (min (max (wo(:,3), -1), 1));
+  bin = min (max (floor (to / (pi / 2) * T.nt) + 1, 1), T.nt);
+  r = hypot (wo(:,1), wo(:,2));
+  az = [wo(:,1), wo(:,2)] ./ r;
+  az(! (r > 0), :) = repmat ([1 0], sum (! (r > 0)), 1);
+  full = T.cu(bin,end) > 0;
+  W = [repmat(P.wd, rows (wo), 1), repmat(1 - P.wd, rows (wo), 1)];
+  W(! full,:) = repmat ([1 0], sum (! full), 1);
+  M = struct ("W", W, "kind", [0 3], "e", [0 0], "alpha", [0 0], "A", {{[], []}}, "T", T,
+              "bin", bin, "az", az);
 endfunction

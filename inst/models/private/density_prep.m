@@ -13,12 +13,20 @@
 ## roughness @code{def.width (q)} (exact for GGX, the type's own angular
 ## width for the others) weighted by ks times the albedo of its unit lobe
 ## at normal incidence (the model's check rejects negative rho_d, ks and
-## e, so every weight is >= 0).
+## e, so every weight is >= 0).  A tabulated density of MERL data
+## (@code{density_table}, field @code{sampler} "table") is kept whole, with
+## the weight of the cosine-weighted hemisphere beside it (@code{wd}, the
+## defensive part that reaches every direction the table's cells miss).
 ## @end deftypefn
 function P = density_prep (model, fname)
+  if (isfield (model, "sampler") && strcmp (model.sampler, "table"))
+    P = struct ("model", model, "lafortune", false, "table", true, "wd", 0.1,
+                "cxy", [], "cz", [], "e", [], "alpha", [], "wk", []);
+    return;
+  endif
   [model, def] = __lafortune_check_model__ (model, fname);
-  P = struct ("model", model, "lafortune", isempty (def.lobe), "wd", mean (model.rho_d),
-              "cxy", [], "cz", [], "e", [], "alpha", [], "wk", []);
+  P = struct ("model", model, "lafortune", isempty (def.lobe), "table", false,
+              "wd", mean (model.rho_d), "cxy", [], "cz", [], "e", [], "alpha", [], "wk", []);
   if (P.lafortune)
     P.cxy = model.Cxy(:).';
     P.cz = model.Cz(:).';
