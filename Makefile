@@ -39,7 +39,7 @@ DEB_PACKAGES := octave octave-optim liboctave-dev libopenexr-dev pkg-config povr
 # test dependencies (make deps CLUSTER=1): the real ssh server and Slurm cluster of make check
 CLUSTER_PACKAGES := slurm-wlm munge openssh-server openssh-client
 
-.PHONY: all deps check stability bench dist install reproduce database clean distclean
+.PHONY: all deps check stability floor klights bench dist install reproduce database clean distclean
 
 all: dist
 
@@ -94,6 +94,18 @@ stability: deps
 	@$(MAKE) --no-print-directory -C src
 	$(OCT) --path src --eval 'addpath (genpath ("inst")); addpath ("scripts"); exit (study_stability () > 0)'
 
+# the sampling's studies (issue 45): the judge step's noise floor per
+# material and density (study_floor; LAFORTUNE_FLOOR_MERL: a folder of MERL
+# files), and how close K lights come to an environment map per material
+# and K (study_klights; LAFORTUNE_KLIGHTS_MERL)
+floor: deps
+	@$(MAKE) --no-print-directory -C src
+	$(OCT) --path src --eval 'addpath (genpath ("inst")); addpath ("scripts"); pkg load optim; study_floor ();'
+
+klights: deps
+	@$(MAKE) --no-print-directory -C src
+	$(OCT) --path src --eval 'addpath (genpath ("inst")); addpath ("scripts"); pkg load optim; study_klights ();'
+
 bench: deps
 	$(MAKE) -C src
 	@for b in $(filter-out scripts/bench_data.m,$(wildcard scripts/bench_*.m)); do \
@@ -143,7 +155,7 @@ octmat = if [ -s $(call queue_of,$(1),$(2)) ]; then $(3) POV_THREADS=$(pov_threa
 # records a step reads), and from the code (DEPS_script, like a compiler's
 # -MM), so that a change to a file under inst/ re-runs only the steps that
 # may call it.  Without it (the goals below need no step) no step rule exists.
-NO_STEP_GOALS := all deps check bench dist install clean distclean
+NO_STEP_GOALS := all deps check stability floor klights bench dist install clean distclean
 ifneq ($(filter-out $(NO_STEP_GOALS),$(MAKECMDGOALS)),)
 build/deps.mk: $(wildcard scripts/*.m inst/*.m inst/*/*.m inst/*/private/*.m src/*.cc) inst $(wildcard inst/*/ inst/*/private/) scripts
 	@mkdir -p build
