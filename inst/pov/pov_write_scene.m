@@ -106,9 +106,11 @@
 ## @item @qcode{"gamma_tol"} (0.03)
 ## Perspective camera: the error allowed when interpolating between levels
 ## of gamma, relative to the largest radiance (see above).
-## @item @qcode{"lights"} (64)
+## @item @qcode{"lights"} (256)
 ## An environment light becomes this many directional lights
-## (@code{scene_lights}).
+## (@code{scene_lights}).  K lights approximate the map; a mirror-like
+## material shows them as K points instead of the map's reflection
+## (@code{scripts/study_klights.m} measures how close each K comes).
 ## @item @qcode{"dense"} (0: automatic)
 ## Points per axis of the dense tabulation the entries are chosen from;
 ## automatic is max (257, 2 @qcode{"entries"} + 1).
@@ -186,7 +188,7 @@ function info = pov_write_scene (scene, material, file, varargin)
   opt = __lafortune_parse_opts__ (varargin, fname,
                     struct ("entries", 256, "knots", "adaptive", "table_tol", 1e-3,
                             "lobe_tol", 1e-4, "crop", true, "cull", true, "pad", 0.02,
-                            "dense", 0, "gamma_tol", 0.03, "lights", 64));
+                            "dense", 0, "gamma_tol", 0.03, "lights", 256));
   opt = check_opts (opt, fname);
   __lafortune_scene_check__ (scene, fname);
   cam = __lafortune_scene_camera__ (scene);
