@@ -292,6 +292,34 @@
 %!                     - rt_render (s2, mats{1}, "sampling", smp, "progress", false)(:)) .^ 2);
 %! assert (rel ("mis") < rel ("light") / 2);
 
+%!test
+%! ## the BRDF's share of the samples: about none for a diffuse material (a
+%! ## Lambertian's density is the cosine, m2 = 1: the map's samples alone,
+%! ## light sampling itself), about half for a sharp one, and any
+%! ## share asked for (0.5: 0.11.0's split)
+%! s = scene_make ("sphere", "size", 16, "spp", 1, "light", "environment", "map", "sky",
+%!                 "light_samples", 16);
+%! lam = struct ("rho_d", [0.5 0.5 0.5], "Cxy", zeros (0, 3), "Cz", zeros (0, 3), "e", zeros (0, 3));
+%! [a, ia] = rt_render (s, lam, "progress", false);
+%! assert (ia.brdf_share, 0);
+%! l = rt_render (s, lam, "progress", false, "sampling", "light");
+%! assert (isequal (a, l));            # light sampling itself, bit for bit
+%! sharp = struct ("rho_d", [0.02 0.02 0.02], "Cxy", [-1 -1 -1], "Cz", [1 1 1], "e", [300 300 300]);
+%! [~, ib] = rt_render (s, sharp, "progress", false);
+%! assert (ib.brdf_share, 0.5);
+%! [~, ih, C] = rt_render (s, lam, "progress", false, "brdf_share", 0.25);
+%! assert (ih.brdf_share, 0.25);
+%! [~, ic] = rt_render (s, sharp, "progress", false, "brdf_share", 0.25, "cache", C);
+%! assert (ic.brdf_share, 0.25);
+
+%!error id=lafortune:badOption
+%! s = scene_make ("sphere", "size", 8, "light", "environment", "map", "sky");
+%! rt_render (s, struct ("rho_d", [1 1 1], "Cxy", [], "Cz", [], "e", []), "brdf_share", 2);
+%!error <same scene and options>
+%! s = scene_make ("sphere", "size", 8, "spp", 1, "light", "environment", "map", "sky", "light_samples", 8);
+%! lam = struct ("rho_d", [0.5 0.5 0.5], "Cxy", zeros (0, 3), "Cz", zeros (0, 3), "e", zeros (0, 3));
+%! [~, ~, C] = rt_render (s, lam, "progress", false);
+%! rt_render (s, lam, "progress", false, "cache", C, "brdf_share", 0.5);
 %!error id=lafortune:badOption
 %! s = scene_make ("sphere", "size", 8, "light", "environment", "map", "sky");
 %! rt_render (s, struct ("rho_d", [1 1 1], "Cxy", [], "Cz", [], "e", []), "sampling", "bogus");

@@ -22,7 +22,9 @@
 ## weighting to 20000 samples of the hemisphere (@code{merl_samples}
 ## without views) and samples their lobes.  Keep @var{model} (the second
 ## output: the table or the fit) in @code{material.sampler} to make it
-## once per material; a table is itself a valid @var{material} here.
+## once per material; a table is itself a valid @var{material} here.  A
+## table also keeps @code{m2}, its second moment against the cosine, from
+## which @code{rt_render} takes the share of BRDF samples.
 ##
 ## @var{D} is a struct for @code{brdf_sample} and @code{brdf_pdf}: the
 ## density's parts that do not depend on the view, prepared once; its field
@@ -85,6 +87,10 @@ function [D, model] = brdf_density (material, method = "table")
   endswitch
   D = density_prep (model, "brdf_density");
   D.density_of = kind;
+  if (D.table && ! isfield (model, "m2"))   # how sharp it is, kept with the table
+    model.m2 = __lafortune_density_m2__ (D);
+    D.model = model;
+  endif
 endfunction
 
 ## a tabulated density of MERL data (density_table)

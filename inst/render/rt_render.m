@@ -62,11 +62,13 @@
 ## @item "auto"
 ## (default) "slice" when possible, else "direct" (perspective camera or point
 ## light); "lights" under an environment light or a list of lights.
-## @item "lights"
-## the only mode (for any camera) for @code{scene.light.type}
-## @qcode{"environment"} or @qcode{"lights"} (@code{scene_make};
-## @qcode{"direct"} gives it too).  Each pixel sample that hits a surface
-## takes @qcode{"light_samples"} directions (default
+## @end table
+##
+## Lights mode is not a value of @code{"mode"}: it is the only mode (for any
+## camera) for @code{scene.light.type} @qcode{"environment"} or
+## @qcode{"lights"} (@code{scene_make}), which @qcode{"auto"} and
+## @qcode{"direct"} both give (@code{info.mode} is @qcode{"lights"}).  Each
+## pixel sample that hits a surface takes @qcode{"light_samples"} directions (default
 ## @code{scene.light.samples}) drawn from the map in proportion to its
 ## luminance times sin theta (a piecewise-constant 2-D distribution over the
 ## texels, marginal over the rows and conditional within each, as pbrt's
@@ -77,10 +79,16 @@
 ## the density, divided by the count (or times the light's irradiance).
 ## Under an environment light option @code{"sampling"} chooses how the
 ## @qcode{"light_samples"} directions are drawn: @qcode{"mis"} (the
-## default, @qcode{"auto"}): half of them (the larger half) from the map
-## as above and half from the BRDF density (@code{brdf_sample}), combined
-## by multiple importance sampling with the balance heuristic, each sample
-## weighted by the map's radiance over n_light p_light + n_brdf p_brdf;
+## default, @qcode{"auto"}): a share of them from the BRDF density
+## (@code{brdf_sample}) and the rest from the map as above, combined by
+## multiple importance sampling with the balance heuristic, each sample
+## weighted by the map's radiance over n_light p_light + n_brdf p_brdf.
+## The share is option @qcode{"brdf_share"}: a number in [0, 1] (0.5 was
+## 0.11.0's), or @qcode{"auto"} (the default), 0.5 (1 - 1/m2) with m2 the
+## density's second moment against the cosine-weighted hemisphere
+## (@code{__lafortune_density_m2__}; 0 below 0.1, where a few BRDF samples
+## cost more than they give): none for a diffuse material, whose light the
+## map's own samples find better, about half for a sharp one;
 ## @qcode{"brdf"}: all from the BRDF density; @qcode{"light"}: all from
 ## the map (0.10.3's sampler, bit for bit).  The density is option
 ## @code{"density"} (a model or a @code{brdf_density}), by default
@@ -88,7 +96,6 @@
 ## MERL material its field @code{sampler}, else a table of its data.
 ## The weights depend on the density only, so every material shaded from
 ## the cache uses the measured data's density and stays unbiased.
-## @end table
 ##
 ## Samples: the @code{scene.spp} primary rays of a pixel are stratified,
 ## one in each cell of an nx x ny grid over the pixel (nx ny = spp, as
@@ -142,8 +149,9 @@
 ## trace took), @code{light_samples} (lights mode: per pixel sample, or the
 ## number of lights), @code{evaluations} (lights mode: the material's
 ## evaluations), @code{time_brdf} (their time), @code{sampling} (the
-## sampling used) and @code{density} (the model the BRDF samples follow,
-## empty for light sampling).
+## sampling used), @code{density} (the model the BRDF samples follow,
+## empty for light sampling) and @code{brdf_share} (the share of the
+## light samples drawn from it).
 ##
 ## @example
 ## @group
@@ -184,7 +192,8 @@ function [img, info, cache] = rt_render (scene, material, varargin)
   opt = __lafortune_parse_opts__ (varargin, "rt_render",
                     struct ("mode", "auto", "progress", true, "jitter", scene_jitter (scene),
                             "chunk", 65536, "slice_size", [128 64], "cache", [],
-                            "light_samples", [], "sampling", "auto", "density", []));
+                            "light_samples", [], "sampling", "auto", "density", [],
+                            "brdf_share", "auto"));
   if (! ischar (opt.mode) || ! any (strcmp (opt.mode, {"auto", "slice", "direct"})))
     error ("lafortune:badOption", "rt_render: MODE must be \"auto\", \"slice\" or \"direct\"");
   endif
@@ -217,6 +226,13 @@ function [img, info, cache] = rt_render (scene, material, varargin)
     ns = rows (scene.light.directions);
   endif
   sampling = env_sampling (opt.sampling, scene);
+  b = opt.brdf_share;
+  if (! ((ischar (b) && strcmp (b, "auto"))
+         || (isnumeric (b) && isreal (b) && isscalar (b) && b >= 0 && b <= 1)))
+    error ("lafortune:badOption",
+           "rt_render: BRDF_SHARE must be \"auto\" or a number in [0, 1], got %s",
+           __lafortune_arg_str__ (b));
+  endif
   mode = opt.mode;
   if (many)
     if (strcmp (mode, "slice"))
@@ -252,7 +268,7 @@ function [img, info, cache] = rt_render (scene, material, varargin)
         env.D = env_dist (scene.light);
       endif
       if (! strcmp (sampling, "light") && isempty (opt.cache))
-        env = mis_env (env, sampling, ns, material, opt.density);
+        env = mis_env (env, sampling, ns, material, opt.density, opt.brdf_share);
       endif
     endif
     Rm = [];
@@ -277,7 +293,7 @@ function [img, info, cache] = rt_render (scene, material, varargin)
   t_int = t_sh = t_shade = t_brdf = 0;
   ## the trace cache: what slice shading needs of each chunk's trace
   key = struct ("scene", scene, "jitter", logical (opt.jitter), "chunk", chunk, "slice_size", n,
-                "light_samples", ns, "sampling", sampling);
+                "light_samples", ns, "sampling", sampling, "brdf_share", opt.brdf_share);
   cached = ! isempty (opt.cache);
   if (cached)
     if (strcmp (mode, "direct"))
@@ -288,7 +304,7 @@ function [img, info, cache] = rt_render (scene, material, varargin)
     if (! (isstruct (opt.cache) && isscalar (opt.cache) && isfield (opt.cache, "key")
            && isfield (opt.cache, "chunks") && isequal (opt.cache.key, key)))
       error ("lafortune:badOption",
-             "rt_render: CACHE must be the third output of rt_render for the same scene and options (jitter, chunk, slice_size, light_samples, sampling)");
+             "rt_render: CACHE must be the third output of rt_render for the same scene and options (jitter, chunk, slice_size, light_samples, sampling, brdf_share)");
     endif
     nshadow = opt.cache.nshadow;
   endif
@@ -433,6 +449,7 @@ function [img, info, cache] = rt_render (scene, material, varargin)
     cache = struct ("key", key, "chunks", {chunks}, "nshadow", nshadow, "density", []);
     if (isfield (env, "S"))              # the density the weights are made with
       cache.density = env.S.model;
+      cache.brdf_share = env.nb / ns;
     endif
     if (lights)                        # every light sample's X in one array
       cache.rows = nrow;
@@ -451,11 +468,15 @@ function [img, info, cache] = rt_render (scene, material, varargin)
                  "rays", rays, "rays_per_second", rays / time_total,
                  "material_bytes", material_bytes, "slice_size", [], "spp", spp,
                  "cached", cached, "light_samples", ns, "evaluations", nevals,
-                 "time_brdf", t_brdf, "sampling", sampling, "density", []);
+                 "time_brdf", t_brdf, "sampling", sampling, "density", [], "brdf_share", []);
   if (isfield (env, "S"))
     info.density = env.S.model;
+    info.brdf_share = env.nb / ns;
   elseif (cached && isfield (opt.cache, "density"))
     info.density = opt.cache.density;
+    if (isfield (opt.cache, "brdf_share"))
+      info.brdf_share = opt.cache.brdf_share;
+    endif
   endif
   if (strcmp (mode, "slice"))
     info.slice_size = n;
@@ -485,14 +506,22 @@ endfunction
 ## the BRDF samples of an environment light: NS split into light and BRDF
 ## samples (mis: half each, the light's the larger half; brdf: all), and
 ## the density (DENSITY, else the material's: brdf_density)
-function env = mis_env (env, sampling, ns, material, density)
-  env.nb = merge (strcmp (sampling, "brdf"), ns, floor (ns / 2));
-  env.nl = ns - env.nb;
+function env = mis_env (env, sampling, ns, material, density, share)
   if (isempty (density))
     density = material;
   endif
   env.S = brdf_density (density);
-  env.mis = true;
+  if (strcmp (sampling, "brdf"))
+    env.nb = ns;
+  else
+    if (strcmp (share, "auto"))        # about none for a diffuse density, about half for a sharp one
+      share = 0.5 * (1 - 1 / max (__lafortune_density_m2__ (env.S), 1));
+      share *= share >= 0.1;           # a few BRDF samples cost more than they give
+    endif
+    env.nb = floor (ns * share + 0.5 - 1e-9);   # a half rounds down: the light's the larger half
+  endif
+  env.nl = ns - env.nb;
+  env.mis = env.nb > 0;                # no BRDF samples: light sampling's estimator, and its cost
 endfunction
 
 ## Lights mode: the chunks IC (whose light samples' X, stacked, are X) shaded
