@@ -165,6 +165,24 @@ endfunction
 %! rand ("state", state);
 
 %!test
+%! ## bad data: NaN, Inf and negative bins give a finite table whose views'
+%! ## cells sum to 1; a black material's table is empty, and its draws are
+%! ## the cosine's, with the cosine's density
+%! B = merl_standin ("red-plastic");
+%! B.data(1:97:end,:) = NaN;
+%! B.data(5:89:end,:) = Inf;
+%! B.data(7:83:end,:) = -1;
+%! [~, T] = brdf_density (B);
+%! assert (all (isfinite (T.P(:)) & T.P(:) >= 0) && isfinite (T.m2));
+%! assert (sum (reshape (T.P, T.nt, []), 2), ones (T.nt, 1), 1e-12);
+%! B.data(:) = 0;
+%! [D, T] = brdf_density (B);
+%! assert (all (T.P(:) == 0));
+%! wo = repmat ([sin(0.4) 0 cos(0.4)], 200, 1);
+%! [wi, p] = brdf_sample (D, wo, rand (200, 2));
+%! assert (p, wi(:,3) / pi, 1e-14);
+
+%!test
 %! ## "fit": 2 Lafortune lobes made for sampling
 %! [D, m] = brdf_density (merl_standin ("red-plastic"), "fit");
 %! assert (size (m.e), [2 3]);
