@@ -9,8 +9,10 @@
 ##
 ## Runs every %!test / %!error / %!warning block of the package's functions
 ## (inst/*.m and the oct-files' src/*.cc tests) and of test/test_*.m, prints one
-## line per file, the log of failing files, and last a line
-## "N passed, M failed"; exits 1 on any failure.
+## line per file, the log of failing files, the number of tests skipped
+## (their data or tool missing: Octave's own skips, and tests that print a
+## line "skipped: why"), and last a line "N passed, M failed"; exits 1 on
+## any failure.
 ##
 ## The files of SECOND (the longest, most of whose time is spent waiting for
 ## make, POV-Ray and the renders it starts) run in a second Octave process
@@ -20,16 +22,33 @@
 ## OUTDIR/NAME.log, OUTDIR/NAME.res per file and OUTDIR/done last.
 
 1;
-## run one test file: its counts [n nmax nxfail nbug nskip nrtskip] and time
+## run one test file: its counts [n nmax nxfail nbug nskip nrtskip] and time.
+## A test that finds its data or tool missing prints a line "skipped: why"
+## and returns; it is counted as skipped (nrtskip), not passed, and its
+## line is shown.
 function [r, t] = run_file (name, log)
   fid = fopen (log, "w");
   t0 = tic ();
   try
-    [n, nmax, nxfail, nbug, nskip, nrtskip] = test (name, "quiet", fid);
+    out = evalc ("[n, nmax, nxfail, nbug, nskip, nrtskip] = test (name, 'quiet', fid);");
   catch err
     fprintf (fid, "test driver error: %s\n", err.message);
     n = 0; nmax = 1; nxfail = nbug = nskip = nrtskip = 0;
+    out = "";
   end_try_catch
+  said = regexp (out, '^skipped:[^\n]*', "match", "lineanchors");
+  for i = 1:numel (said)
+    printf ("     %s\n", said{i});
+    fprintf (fid, "%s\n", said{i});
+  endfor
+  k = min (numel (said), n);
+  n -= k;
+  nrtskip += k;
+  rest = regexprep (out, '^skipped:[^\n]*\n?', "", "lineanchors");
+  if (! isempty (strtrim (rest)))      # what the tests print, after the file ran
+    fprintf (fid, "%s", rest);
+    printf ("%s", rest);
+  endif
   fclose (fid);
   ## a file with no tests at all is a failure: every public file has tests
   if (nmax == 0)
@@ -46,8 +65,12 @@ function [passed, failed, skipped, bad] = tally (short, r, t, txt, passed, faile
   passed += r(1);
   failed += nfail;
   skipped += r(5) + r(6);
-  printf ("%-4s %-22s %3d/%-3d %6.1f s\n", merge (nfail == 0, "ok", "FAIL"), short,
-          r(1), r(2), t);
+  skip = "";
+  if (r(5) + r(6) > 0)
+    skip = sprintf ("  (%d skipped)", r(5) + r(6));
+  endif
+  printf ("%-4s %-22s %3d/%-3d %6.1f s%s\n", merge (nfail == 0, "ok", "FAIL"), short,
+          r(1), r(2), t, skip);
   fflush (stdout);
   if (nfail > 0)
     bad{end+1} = {short, txt};
