@@ -200,6 +200,11 @@ if (any (second))
     res = fullfile (wdir, [short ".res"]);
     if (exist (res, "file"))
       v = str2num (fileread (res));
+      said = regexp (fileread (fullfile (wdir, [short ".log"])), '^skipped:[^\n]*', "match",
+                     "lineanchors");
+      if (! isempty (said))
+        printf ("     %s\n", said{:});
+      endif
       [passed, failed, skipped, bad] = tally (short, v(1:6), v(7),
                                               fileread (fullfile (wdir, [short ".log"])),
                                               passed, failed, skipped, bad);
