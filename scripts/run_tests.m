@@ -36,7 +36,7 @@ function [r, t] = run_file (name, log)
     n = 0; nmax = 1; nxfail = nbug = nskip = nrtskip = 0;
     out = "";
   end_try_catch
-  said = regexp (out, '^skipped:[^\n]*', "match", "lineanchors");
+  said = skip_lines (out);
   for i = 1:numel (said)
     printf ("     %s\n", said{i});
     fprintf (fid, "%s\n", said{i});
@@ -57,6 +57,11 @@ function [r, t] = run_file (name, log)
   endif
   r = [n, nmax, nxfail, nbug, nskip, nrtskip];
   t = toc (t0);
+endfunction
+
+## the lines "skipped: why" that tests print in TXT
+function said = skip_lines (txt)
+  said = regexp (txt, '^skipped:[^\n]*', "match", "lineanchors");
 endfunction
 
 ## add one file's counts R and time T to the totals, print its line
@@ -200,8 +205,7 @@ if (any (second))
     res = fullfile (wdir, [short ".res"]);
     if (exist (res, "file"))
       v = str2num (fileread (res));
-      said = regexp (fileread (fullfile (wdir, [short ".log"])), '^skipped:[^\n]*', "match",
-                     "lineanchors");
+      said = skip_lines (fileread (fullfile (wdir, [short ".log"])));
       if (! isempty (said))
         printf ("     %s\n", said{:});
       endif

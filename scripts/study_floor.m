@@ -48,14 +48,10 @@ function T = study_floor (merl_dir = getenv ("LAFORTUNE_FLOOR_MERL"), quick = fa
   floor_print (T, maps);
 endfunction
 
+## The stand-ins (the proxies, else the built-in ones: bench_data), then
+## every *.binary of MERL_DIR, each read when its turn comes
 function files = floor_files (merl_dir)
-  files = {};
-  for name = {"green-metallic-paint", "red-plastic"}
-    files{end+1} = bench_data (name{1});
-    if (isempty (files{end}))
-      files{end} = name{1};                 # the built-in stand-in
-    endif
-  endfor
+  files = {"green-metallic-paint", "red-plastic"};
   if (! isempty (merl_dir))
     l = dir (fullfile (merl_dir, "*.binary"));
     files = [files, cellfun(@(n) fullfile (merl_dir, n), {l.name}, "uniformoutput", false)];
@@ -66,7 +62,7 @@ function b = floor_read (f)
   if (exist (f, "file"))
     b = merl_read (f);
   else
-    b = merl_standin (f);
+    [~, b] = bench_data (f, @() merl_standin (f), "the built-in stand-in");
   endif
 endfunction
 

@@ -58,12 +58,7 @@ endfunction
 function mats = klights_materials (merl_dir)
   mats = {};
   for name = {"green-metallic-paint", "red-plastic"}
-    f = bench_data (name{1});
-    if (isempty (f))
-      mats{end+1} = merl_standin (name{1});
-    else
-      mats{end+1} = merl_read (f);
-    endif
+    [~, mats{end+1}] = bench_data (name{1}, @() merl_standin (name{1}), "the built-in stand-in");
   endfor
   for name = {"steel", "aluminium", "two-layer-gold", "red-metallic-paint", ...
               "specular-white-phenolic", "beige-fabric", "pink-fabric"}

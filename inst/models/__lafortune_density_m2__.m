@@ -21,10 +21,8 @@ function m2 = __lafortune_density_m2__ (D)
   endif
   nu = 48;
   np = 32;
-  [PH, U] = meshgrid (((1:np) - 0.5) / np * pi, ((1:nu) - 0.5) / nu);
-  th = pi / 2 * U(:) .^ 2;
-  h = [sin(th) .* cos(PH(:)), sin(th) .* sin(PH(:)), cos(th)];
-  dA = pi * U(:) .* sin (th) * (1 / nu) * (2 * pi / np);   # both signs of phi
+  [h, U, th] = __lafortune_half_grid__ (nu, np);
+  dA = pi * U .* sin (th) * (1 / nu) * (2 * pi / np);   # both signs of phi
   to = ((1:8) - 0.5) / 8 * pi / 2;
   m = zeros (1, numel (to));
   for k = 1:numel (to)

@@ -61,10 +61,7 @@ function [D, model] = brdf_density (material, method = "table")
     model = D.model;
     return;
   endif
-  kind = __lafortune_material_kind__ (material);
-  if (is_table (material))
-    kind = "table";
-  endif
+  kind = merge (is_table (material), "table", __lafortune_material_kind__ (material));
   switch (kind)
     case "merl"
       if (isfield (material, "sampler") && ! isempty (material.sampler))
@@ -75,17 +72,14 @@ function [D, model] = brdf_density (material, method = "table")
         S = merl_samples (material, "views", false, "max_samples", 20000);
         model = lafortune_fit (S, 2, "weight", "log");
       endif
-      kind = "merl";
-    case "table"
-      model = material;
-    case {"lafortune", "model"}
+    case {"table", "lafortune", "model"}
       model = material;
     otherwise
       error ("lafortune:badMaterial",
              "brdf_density: MATERIAL must be an analytic model (see brdf_model) or a MERL material (fields data, valid), got %s",
              class (material));
   endswitch
-  D = density_prep (model, "brdf_density");
+  D = density_prep (model, "brdf_density", is_table (model));
   D.density_of = kind;
   if (D.table && ! isfield (model, "m2"))   # how sharp it is, kept with the table
     model.m2 = __lafortune_density_m2__ (D);

@@ -225,14 +225,7 @@ function [img, info, cache] = rt_render (scene, material, varargin)
   elseif (strcmp (scene.light.type, "lights"))
     ns = rows (scene.light.directions);
   endif
-  sampling = env_sampling (opt.sampling, scene);
-  b = opt.brdf_share;
-  if (! ((ischar (b) && strcmp (b, "auto"))
-         || (isnumeric (b) && isreal (b) && isscalar (b) && b >= 0 && b <= 1)))
-    error ("lafortune:badOption",
-           "rt_render: BRDF_SHARE must be \"auto\" or a number in [0, 1], got %s",
-           __lafortune_arg_str__ (b));
-  endif
+  sampling = env_sampling (opt.sampling, scene, opt.brdf_share);
   mode = opt.mode;
   if (many)
     if (strcmp (mode, "slice"))
@@ -446,11 +439,8 @@ function [img, info, cache] = rt_render (scene, material, varargin)
   img = reshape (acc / spp, H, W, 3);
   cache = [];
   if (keep)
-    cache = struct ("key", key, "chunks", {chunks}, "nshadow", nshadow, "density", []);
-    if (isfield (env, "S"))              # the density the weights are made with
-      cache.density = env.S.model;
-      cache.brdf_share = env.nb / ns;
-    endif
+    cache = struct ("key", key, "chunks", {chunks}, "nshadow", nshadow);
+    [cache.density, cache.brdf_share] = sampling_used (env, ns, []);   # what the weights are made with
     if (lights)                        # every light sample's X in one array
       cache.rows = nrow;
       cache.X = vertcat (Xs{:});
@@ -469,24 +459,33 @@ function [img, info, cache] = rt_render (scene, material, varargin)
                  "material_bytes", material_bytes, "slice_size", [], "spp", spp,
                  "cached", cached, "light_samples", ns, "evaluations", nevals,
                  "time_brdf", t_brdf, "sampling", sampling, "density", [], "brdf_share", []);
-  if (isfield (env, "S"))
-    info.density = env.S.model;
-    info.brdf_share = env.nb / ns;
-  elseif (cached && isfield (opt.cache, "density"))
-    info.density = opt.cache.density;
-    if (isfield (opt.cache, "brdf_share"))
-      info.brdf_share = opt.cache.brdf_share;
-    endif
-  endif
+  [info.density, info.brdf_share] = sampling_used (env, ns, opt.cache);
   if (strcmp (mode, "slice"))
     info.slice_size = n;
   endif
 endfunction
 
+## the density the BRDF samples followed and their share of the NS light
+## samples: this render's (ENV.S), else those of the trace cache CACHE, else
+## none (light sampling)
+function [density, share] = sampling_used (env, ns, cache)
+  density = share = [];
+  if (isfield (env, "S"))
+    density = env.S.model;
+    share = env.nb / ns;
+  elseif (isstruct (cache) && isfield (cache, "density"))
+    density = cache.density;
+    if (isfield (cache, "brdf_share"))
+      share = cache.brdf_share;
+    endif
+  endif
+endfunction
+
 ## the sampling of an environment light: OPT ("auto", "light", "brdf" or
 ## "mis"); "auto" is "mis" under an environment light, "light" under a list
-## of lights or a single light (nothing to combine)
-function sampling = env_sampling (opt, scene)
+## of lights or a single light (nothing to combine); and SHARE, the option
+## brdf_share, checked: "auto" or a number in [0, 1]
+function sampling = env_sampling (opt, scene, share)
   if (! ischar (opt) || ! any (strcmp (opt, {"auto", "light", "brdf", "mis"})))
     error ("lafortune:badOption",
            "rt_render: SAMPLING must be \"auto\", \"light\", \"brdf\" or \"mis\", got %s",
@@ -499,6 +498,12 @@ function sampling = env_sampling (opt, scene)
     error ("lafortune:badOption",
            "rt_render: SAMPLING \"%s\" needs an environment light, got a %s light", opt,
            scene.light.type);
+  endif
+  if (! ((ischar (share) && strcmp (share, "auto"))
+         || (isnumeric (share) && isreal (share) && isscalar (share) && share >= 0 && share <= 1)))
+    error ("lafortune:badOption",
+           "rt_render: BRDF_SHARE must be \"auto\" or a number in [0, 1], got %s",
+           __lafortune_arg_str__ (share));
   endif
   sampling = opt;
 endfunction

@@ -2,7 +2,7 @@
 ## SPDX-License-Identifier: GPL-3.0-or-later
 
 ## -*- texinfo -*-
-## @deftypefn {} {@var{P} =} density_prep (@var{model}, @var{fname})
+## @deftypefn {} {@var{P} =} density_prep (@var{model}, @var{fname}, @var{table})
 ## The parts of an analytic model's sampling density that do not depend on
 ## the viewing direction (private, for @code{brdf_density},
 ## @code{brdf_sample} and @code{brdf_pdf}): the model checked, its type,
@@ -14,12 +14,12 @@
 ## width for the others) weighted by ks times the albedo of its unit lobe
 ## at normal incidence (the model's check rejects negative rho_d, ks and
 ## e, so every weight is >= 0).  A tabulated density of MERL data
-## (@code{density_table}, field @code{sampler} "table") is kept whole, with
+## (@code{density_table}; @var{table} true) is kept whole, with
 ## the weight of the cosine-weighted hemisphere beside it (@code{wd}, the
 ## defensive part that reaches every direction the table's cells miss).
 ## @end deftypefn
-function P = density_prep (model, fname)
-  if (isfield (model, "sampler") && strcmp (model.sampler, "table"))
+function P = density_prep (model, fname, table = false)
+  if (table)
     P = struct ("model", model, "lafortune", false, "table", true, "wd", 0.1,
                 "cxy", [], "cz", [], "e", [], "alpha", [], "wk", []);
     return;

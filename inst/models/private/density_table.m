@@ -23,11 +23,7 @@
 function T = density_table (brdf, nt = 32, nu = 64, np = 64)
   t0 = tic ();
   to = ((1:nt) - 0.5) / nt * pi / 2;
-  u = ((1:nu) - 0.5) / nu;
-  ph = ((1:np) - 0.5) / np * pi;
-  [PH, U] = meshgrid (ph, u);          # nu x np, u down the rows
-  th = pi / 2 * U(:) .^ 2;
-  h = [sin(th) .* cos(PH(:)), sin(th) .* sin(PH(:)), cos(th)];
+  [h, U, th] = __lafortune_half_grid__ (nu, np);   # u down the rows
   P = zeros (nt, nu, np);
   for b = 1:nt
     wo = [sin(to(b)), 0, cos(to(b))];
